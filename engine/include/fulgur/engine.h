@@ -1,0 +1,158 @@
+/* fulgur — the real-time engine: post discharges, pull sound.
+ *
+ *   sim thread                          audio thread (host's device)
+ *   fg_engine_post(e, &discharge)  -->  fg_engine_render(e, out, nframes)
+ *   fg_engine_collect(e)          <--   (finished voices)
+ *   fg_engine_set_listener(e, &pose)    [any thread, latest value wins]
+ *
+ * The engine clock is the audio clock: frames rendered so far divided by the
+ * sample rate. Output is pascals at the ear, one plane per channel.
+ */
+#ifndef FULGUR_ENGINE_H
+#define FULGUR_ENGINE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "fulgur/defs.h"
+#include "fulgur/result.h"
+#include "fulgur/sound.h"
+#include "fulgur/tree.h"
+
+typedef struct fg_engine fg_engine;
+
+/* Zero in any field means "the default" given in its comment. */
+typedef struct fg_engine_config {
+    double sample_rate_hz;        /* 48000; must lie in [8000, 384000] */
+    uint32_t max_block_frames;    /* 4096; the largest nframes render accepts, <= 65536 */
+    uint32_t channels;            /* 2; 1 = one ear at the listener's centre, 2 = two ears */
+    uint32_t max_voices;          /* 64; discharges alive at once (posted, sounding or uncollected) */
+    uint32_t segment_capacity;    /* 262144; segments held by all live voices together */
+    double speed_of_sound_m_s;    /* 343; 331.5 + 0.6 * (temperature in degC) */
+    double ear_spacing_m;         /* 0.18; distance between the two ears */
+    double max_lookahead_s;       /* 0.25; cap on the motion look-ahead (see fg_engine_render) */
+    uint32_t max_adopt_per_block; /* 8; posted voices the audio thread takes per block */
+} fg_engine_config;
+
+/* Strokes of one discharge at most (the log-series tail is cut here). */
+#define FG_MAX_STROKES 32
+
+/* An emit time meaning "the start of the block that adopts the voice". */
+#define FG_EMIT_NOW (-1.0)
+
+typedef struct fg_discharge {
+    const fg_node *nodes;   /* borrowed for the duration of fg_engine_post */
+    size_t node_count;
+    fg_sound_params sound;
+    double emit_time_s;     /* engine clock, >= 0, or FG_EMIT_NOW */
+    uint32_t strokes;       /* 0: drawn from the log-series law; else 1..FG_MAX_STROKES */
+    int continuous;         /* non-zero: re-emit the pattern until stopped (plasma ball, held gap) */
+    double repeat_min_s;    /* continuous: interval range, default 0.010 .. 0.050 s */
+    double repeat_max_s;
+    double duration_s;      /* continuous: stop after this long; 0 = until fg_engine_stop */
+    uint64_t seed;          /* T0 fluctuation, stroke count and intervals, repeat intervals */
+} fg_discharge;
+
+/* Identifies a posted voice until it is collected. Never 0. */
+typedef uint64_t fg_voice_id;
+
+typedef struct fg_listener {
+    double position[3];  /* metres */
+    double forward[3];   /* any length > 0 */
+    double up[3];        /* any length > 0, not parallel to forward */
+    double velocity[3];  /* m/s; informational (geometry follows the pose each block) */
+} fg_listener;
+
+typedef struct fg_engine_stats {
+    uint64_t posted;            /* voices accepted by fg_engine_post */
+    uint64_t dropped_posts;     /* posts refused for a full pool or queue */
+    uint64_t adopted;           /* voices taken by the audio thread */
+    uint64_t finished;          /* voices the audio thread has retired */
+    uint64_t collected;         /* voices reclaimed by fg_engine_collect */
+    uint64_t late_events;       /* events that began before the block that could first play them */
+    uint64_t late_samples;      /* per ear, the samples those events lost */
+    uint64_t skipped_repeats;   /* continuous repeats dropped for lack of instance slots */
+    uint64_t blocks;            /* render calls that produced sound */
+    uint64_t blocks_over_budget;/* render calls that took longer than their frames last */
+} fg_engine_stats;
+
+/* Fills *config with the defaults. [any-thread] */
+FG_API void fg_engine_config_default(fg_engine_config *config);
+
+/* Creates an engine; every buffer the audio thread will touch is allocated
+ * here. config may be NULL (all defaults). *out is owned by the caller until
+ * fg_engine_destroy. [main-thread]
+ * Errors: FG_ERR_NULL out; FG_ERR_SAMPLE_RATE rate outside [8000, 384000];
+ * FG_ERR_NOT_FINITE a NaN/inf field; FG_ERR_ARGUMENT channels not 1 or 2, a
+ * negative speed/spacing/look-ahead, block > 65536, voices or segments too
+ * large; FG_ERR_NO_MEMORY. */
+FG_API FG_NODISCARD fg_result fg_engine_create(const fg_engine_config *config, fg_engine **out);
+
+/* Frees the engine and every voice, sounding or not. NULL is a no-op. No
+ * other call may be running on it. [main-thread] */
+FG_API void fg_engine_destroy(fg_engine *engine);
+
+/* The configuration actually in use (defaults filled in). [any-thread] */
+FG_API void fg_engine_get_config(const fg_engine *engine, fg_engine_config *out);
+
+/* Validates the discharge, copies its tree into a free voice, expands its
+ * strokes, prepares every segment (geometry against the listener pose now,
+ * T0 fluctuation, return-stroke emit delay), sorts the events by arrival and
+ * hands the voice to the audio thread. The caller keeps ownership of
+ * discharge and its nodes. *id (may be NULL) receives the voice's id.
+ * [sim-thread]
+ * Errors: FG_ERR_NULL engine/discharge/nodes; FG_ERR_TREE the tree fails
+ * fg_tree_check; FG_ERR_NOT_FINITE / FG_ERR_ARGUMENT a parameter (see
+ * fg_sound_params_check, strokes > FG_MAX_STROKES, negative emit time other
+ * than FG_EMIT_NOW, continuous with strokes > 1, repeat range outside
+ * (0, 10 s] or min > max); FG_ERR_CAPACITY more segments than
+ * segment_capacity; FG_ERR_POOL_FULL no free voice or segment space now;
+ * FG_ERR_QUEUE_FULL the ring to the audio thread is full. On any error
+ * nothing changes except the dropped_posts counter for the last two. */
+FG_API FG_NODISCARD fg_result fg_engine_post(fg_engine *engine, const fg_discharge *discharge,
+                                             fg_voice_id *id);
+
+/* Ends a continuous voice: no repeat starts after this; the ones sounding
+ * finish. On a lightning voice, no further stroke starts. [sim-thread]
+ * Errors: FG_ERR_NULL engine; FG_ERR_NOT_FOUND the id is not a live voice. */
+FG_API FG_NODISCARD fg_result fg_engine_stop(fg_engine *engine, fg_voice_id id);
+
+/* Reclaims the voices the audio thread has finished; returns how many.
+ * [sim-thread] */
+FG_API size_t fg_engine_collect(fg_engine *engine);
+
+/* Writes nframes of every channel into out[channel][0..nframes). Adopts up
+ * to max_adopt_per_block posted voices, reads the latest listener pose,
+ * evaluates every WM-wave overlapping the block for each ear, and retires
+ * finished voices. Each sample is the exact average of the continuous
+ * pressure over its sample interval.
+ * Moving listener: geometry follows the pose read at the start of each
+ * block. An event joins the block loop when its waveform could start before
+ * the block's end given the listener's displacement d since the post: the
+ * look-ahead is (d + ear_spacing/2)/c, capped at max_lookahead_s; events
+ * brought forward by more than that are counted as late.
+ * [audio-thread] Wait-free; never allocates, locks or prints.
+ * Errors: FG_ERR_NULL engine/out/a plane; FG_ERR_BLOCK_SIZE nframes >
+ * max_block_frames (the planes are then filled with zeros if out is valid). */
+FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *out,
+                                               uint32_t nframes);
+
+/* Publishes the listener pose; the audio thread reads the latest at each
+ * block. The pose is copied. [any-thread] Several writers are serialised
+ * among themselves by a short spin; the audio thread never waits.
+ * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT zero-length or
+ * parallel forward/up. */
+FG_API FG_NODISCARD fg_result fg_engine_set_listener(fg_engine *engine, const fg_listener *pose);
+
+/* Copies the latest published pose into *out. [any-thread] */
+FG_API void fg_engine_get_listener(const fg_engine *engine, fg_listener *out);
+
+/* A snapshot of the counters. [any-thread] */
+FG_API void fg_engine_get_stats(const fg_engine *engine, fg_engine_stats *out);
+
+/* The engine clock: frames rendered so far, and the same in seconds.
+ * [any-thread] */
+FG_API uint64_t fg_engine_frames(const fg_engine *engine);
+FG_API double fg_engine_time_s(const fg_engine *engine);
+
+#endif

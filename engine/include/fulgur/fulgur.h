@@ -1,0 +1,11 @@
+/* fulgur — the sound of electric discharges. One include for the engine. */
+#ifndef FULGUR_FULGUR_H
+#define FULGUR_FULGUR_H
+
+#include "fulgur/defs.h"
+#include "fulgur/engine.h"
+#include "fulgur/result.h"
+#include "fulgur/sound.h"
+#include "fulgur/tree.h"
+
+#endif

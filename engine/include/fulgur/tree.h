@@ -1,0 +1,86 @@
+/* fulgur — the discharge tree: what is drawn and what is heard.
+ *
+ * A tree is an array of nodes. Node 0 is the root (where the leader
+ * started, parent -1); every other node names a parent that comes before it,
+ * so an array that passes fg_tree_check has no cycles. Each non-root node and
+ * its parent form one segment. Positions are metres, z up, ground at z = 0.
+ */
+#ifndef FULGUR_TREE_H
+#define FULGUR_TREE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "fulgur/defs.h"
+#include "fulgur/result.h"
+
+/* Node flags. */
+enum {
+    /* The node lies on the main channel (root -> the node that reached the
+     * target). Dart leaders of later strokes re-emit only segments whose
+     * child node carries this flag. If no node of a tree carries it, the
+     * engine takes the path from the root to the node farthest from it. */
+    FG_NODE_MAIN = 1u << 0
+};
+
+typedef struct fg_node {
+    double x, y, z;   /* metres */
+    int32_t parent;   /* index of the parent node, -1 for the root */
+    uint32_t flags;   /* FG_NODE_* */
+} fg_node;
+
+/* What is wrong with a tree, for messages that name the node. */
+typedef enum fg_tree_fault_kind {
+    FG_TREE_FAULT_NONE = 0,
+    FG_TREE_FAULT_TOO_FEW_NODES,  /* fewer than 2 nodes: no segment */
+    FG_TREE_FAULT_ROOT,           /* node 0 has a parent, or another node has none */
+    FG_TREE_FAULT_PARENT_ORDER,   /* parent is not before the node (would allow cycles) */
+    FG_TREE_FAULT_NOT_FINITE,     /* a coordinate is NaN or infinite */
+    FG_TREE_FAULT_ZERO_LENGTH     /* the node coincides with its parent */
+} fg_tree_fault_kind;
+
+typedef struct fg_tree_fault {
+    fg_tree_fault_kind kind;
+    size_t node;        /* index of the offending node */
+    int32_t parent;     /* its parent, for FG_TREE_FAULT_PARENT_ORDER */
+} fg_tree_fault;
+
+/* Checks a node array against the rules above. On failure fills *fault (if
+ * not NULL) with the first offending node. Reads only; owns nothing.
+ * [any-thread]
+ * Errors: FG_ERR_NULL nodes is NULL; FG_ERR_TREE a rule is broken. */
+FG_API FG_NODISCARD fg_result fg_tree_check(const fg_node *nodes, size_t count,
+                                            fg_tree_fault *fault);
+
+/* A human-readable sentence for a fault, e.g. "parent 9 is not before node 7",
+ * written into buf (always NUL-terminated, truncated to size). [any-thread] */
+FG_API void fg_tree_fault_describe(const fg_tree_fault *fault, char *buf, size_t size);
+
+/* A growable tree owned by the caller, used by the generators. */
+typedef struct fg_tree fg_tree;
+
+/* Creates an empty tree with room for capacity_hint nodes (it grows as
+ * needed). *out is owned by the caller until fg_tree_destroy. [sim-thread]
+ * Errors: FG_ERR_NULL out is NULL; FG_ERR_NO_MEMORY. */
+FG_API FG_NODISCARD fg_result fg_tree_create(size_t capacity_hint, fg_tree **out);
+
+/* Frees the tree; NULL is a no-op. [sim-thread] */
+FG_API void fg_tree_destroy(fg_tree *tree);
+
+/* Appends a node and returns its index in *index (may be NULL). The parent
+ * must be -1 for the first node and an existing index otherwise.
+ * [sim-thread]
+ * Errors: FG_ERR_NULL tree; FG_ERR_NOT_FINITE a coordinate; FG_ERR_TREE bad
+ * parent; FG_ERR_NO_MEMORY. On error the tree is unchanged. */
+FG_API FG_NODISCARD fg_result fg_tree_add(fg_tree *tree, double x, double y, double z,
+                                          int32_t parent, uint32_t flags, size_t *index);
+
+/* Removes every node, keeping the storage. [sim-thread] */
+FG_API void fg_tree_clear(fg_tree *tree);
+
+/* The nodes, valid until the next fg_tree_add, fg_tree_clear or
+ * fg_tree_destroy. Callers may change flags in place. [sim-thread] */
+FG_API fg_node *fg_tree_nodes(fg_tree *tree);
+FG_API size_t fg_tree_count(const fg_tree *tree);
+
+#endif

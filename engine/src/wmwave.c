@@ -1,0 +1,182 @@
+/* The WM-wave (Wright & Medendorp 1968; Matsuyama eq. 5).
+ *
+ * A point N-wave of peak ps and half-duration T, averaged along a segment of
+ * half-length l whose ends arrive s*l/c apart, in tau = c (t - t_a) / l:
+ *   p(tau) = (1/2s) int_{-s}^{s} N(tau - u) du,  N(x) = -(ps/psi) x on |x| < psi.
+ * Eq. 5 is this box average written out; with B = ps/(4 psi) its s >= psi
+ * middle piece is 0 (Glassner's printed -4 B tau there is a typo).
+ *
+ * p is odd, so its integral P is even. For x = |tau| >= 0:
+ *   x >= psi + s:            P = 0
+ *   |psi - s| <= x < psi + s: P = (B/3s) (x - s - psi)^2 (x - s + 2 psi)
+ *   x < psi - s (s < psi):    P = (4Bs/3)(3 psi - 2s) + 2B ((psi - s)^2 - x^2)
+ *   x < s - psi (s >= psi):   P = 4 B psi^3 / (3s)
+ * s -> 0 needs no special case: the cubic shell is then empty. */
+#include <limits.h>
+#include <math.h>
+#include <string.h>
+
+#include "wmwave_internal.h"
+
+wm_shape wm_shape_at(const fg_sound_params *p, double t0_s, double r_m, double s, double l_m,
+                     double c_m_s, double *t_s)
+{
+    double r = r_m > p->r0_m ? r_m : p->r0_m;
+    double stretch = sqrt(1.0 + p->sigma0 * log(r / p->r0_m));
+    double t = t0_s * stretch;
+    double ps = p->r0_m * p->ps0_pa / (r * stretch);
+    double psi = c_m_s * t / l_m;
+    if (t_s)
+        *t_s = t;
+    return (wm_shape){.b = ps / (4.0 * psi), .s = s, .psi = psi};
+}
+
+double wm_pressure(const wm_shape *w, double tau)
+{
+    double s = w->s, psi = w->psi, b = w->b;
+    double x = fabs(tau);
+    double sign = tau < 0 ? -1.0 : 1.0;
+    if (x >= psi + s)
+        return 0.0;
+    if (x > fabs(psi - s))
+        return sign * (b / s) * ((x - s) * (x - s) - psi * psi);
+    if (s < psi)
+        return -4.0 * b * tau;
+    return 0.0;
+}
+
+double wm_integral(const wm_shape *w, double tau)
+{
+    double s = w->s, psi = w->psi, b = w->b;
+    double x = fabs(tau);
+    if (x >= psi + s)
+        return 0.0;
+    if (x >= fabs(psi - s)) {
+        double u = x - s - psi;
+        return (b / (3.0 * s)) * u * u * (x - s + 2.0 * psi);
+    }
+    if (s < psi) {
+        double m = psi - s;
+        return (4.0 * b * s / 3.0) * (3.0 * psi - 2.0 * s) + 2.0 * b * (m * m - x * x);
+    }
+    return 4.0 * b * psi * psi * psi / (3.0 * s);
+}
+
+void wm_event_span(const wm_event *e, long *first, long *last)
+{
+    double half = (e->shape.psi + e->shape.s) * e->width;
+    *first = (long)floor(e->center - half + 0.5);
+    *last = (long)floor(e->center + half + 0.5);
+}
+
+/* P at the sample edge n - 1/2. */
+static double edge_integral(const wm_event *e, long n)
+{
+    return wm_integral(&e->shape, ((double)n - 0.5 - e->center) / e->width);
+}
+
+double wm_sample(const wm_event *e, long n)
+{
+    /* average over one sample = (integral over the interval) / 1 sample,
+     * and d(samples) = width d(tau) */
+    return e->width * (edge_integral(e, n + 1) - edge_integral(e, n));
+}
+
+void wm_add_direct(const wm_event *e, double *out, size_t n)
+{
+    long first, last;
+    wm_event_span(e, &first, &last);
+    if (first < 0)
+        first = 0;
+    if (last > (long)n - 1)
+        last = (long)n - 1;
+    if (first > last)
+        return;
+    double lo = edge_integral(e, first);
+    for (long k = first; k <= last; k++) {
+        double hi = edge_integral(e, k + 1);
+        out[k] += e->width * (hi - lo);
+        lo = hi;
+    }
+}
+
+void wm_block_begin(wm_block *b, double *d3, size_t n)
+{
+    b->d3 = d3;
+    b->n = n;
+    b->state[0] = b->state[1] = b->state[2] = 0.0;
+    memset(d3, 0, n * sizeof *d3);
+}
+
+/* Samples lo..hi (lo >= -3) evaluated exactly: state for k < 0, third
+ * differences for k >= lo + 3 (earlier ones in the range lie on one
+ * quadratic piece and have none). */
+static void add_range(wm_block *b, const wm_event *e, long lo, long hi)
+{
+    /* a merged range is at most the state (3) plus 4 breakpoints (7 each) */
+    enum { MAX_RANGE = 32 };
+    double y[MAX_RANGE];
+    double left = edge_integral(e, lo);
+    for (long k = lo; k <= hi; k++) {
+        double right = edge_integral(e, k + 1);
+        y[k - lo] = e->width * (right - left);
+        left = right;
+        if (k < 0)
+            b->state[-1 - k] += y[k - lo];
+        else if (k >= lo + 3)
+            b->d3[k] += y[k - lo] - 3.0 * y[k - lo - 1] + 3.0 * y[k - lo - 2] - y[k - lo - 3];
+    }
+}
+
+wm_status wm_block_add(wm_block *b, const wm_event *e)
+{
+    const wm_shape *w = &e->shape;
+    long first, last;
+    wm_event_span(e, &first, &last);
+    long n = (long)b->n;
+    if (last < -3)
+        return WM_DONE;
+    if (first >= n)
+        return WM_PENDING;
+
+    /* Breakpoints, ascending; each disturbs the samples m-3..m+3 around the
+     * sample m that holds it. */
+    double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    double taus[4] = {-outer, -inner, inner, outer};
+    long lo = LONG_MIN, hi = LONG_MIN;
+    if (first < 0) {
+        lo = -3;
+        hi = -1;
+    }
+    for (int i = 0; i < 4; i++) {
+        long m = (long)floor(e->center + taus[i] * e->width + 0.5);
+        long a = m - 3 < -3 ? -3 : m - 3;
+        long z = m + 3 > n - 1 ? n - 1 : m + 3;
+        if (a > z)
+            continue;
+        if (hi != LONG_MIN && a <= hi + 1) {
+            if (z > hi)
+                hi = z;
+            continue;
+        }
+        if (hi != LONG_MIN)
+            add_range(b, e, lo, hi);
+        lo = a;
+        hi = z;
+    }
+    if (hi != LONG_MIN)
+        add_range(b, e, lo, hi);
+    return WM_SOUNDING;
+}
+
+void wm_block_end(const wm_block *b, float *out, float gain)
+{
+    double y1 = b->state[0], y2 = b->state[1], y3 = b->state[2];
+    for (size_t k = 0; k < b->n; k++) {
+        double y = b->d3[k] + 3.0 * y1 - 3.0 * y2 + y3;
+        out[k] += gain * (float)y;
+        y3 = y2;
+        y2 = y1;
+        y1 = y;
+    }
+}
