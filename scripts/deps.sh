@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs, when missing, the Debian 12 packages fulgur needs to build, test
+# and plot. Sourced by demo.sh and test.sh; set FULGUR_DEPS_EXTRA to add more.
+fulgur_install_deps() {
+  local pkgs=(cmake make gcc pkg-config libcjson-dev libsndfile1-dev libfftw3-dev
+              libpng-dev gnuplot-nox libcmocka-dev clang-14 libfuzzer-14-dev
+              libclang-rt-14-dev ${FULGUR_DEPS_EXTRA:-})
+  local missing=()
+  for p in "${pkgs[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  echo "installing: ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
