@@ -1,0 +1,61 @@
+#include <math.h>
+
+#include "fulgur/engine.h"
+#include "strokes_internal.h"
+
+static double logseries_weight(uint32_t k)
+{
+    return pow(FG_STROKE_LOGSERIES_P, k) / k;
+}
+
+static double poisson_weight(uint32_t k)
+{
+    double lambda = FG_STROKE_INTERVAL_POISSON_MEAN;
+    return exp(k * log(lambda) - lambda - lgamma(k + 1.0));
+}
+
+/* Inversion over a law cut at kmax; weights need not be normalised. */
+static uint32_t draw(fg_rng *rng, double (*weight)(uint32_t), uint32_t kmin, uint32_t kmax)
+{
+    double total = 0;
+    for (uint32_t k = kmin; k <= kmax; k++)
+        total += weight(k);
+    double u = fg_rng_uniform(rng) * total;
+    for (uint32_t k = kmin; k < kmax; k++) {
+        u -= weight(k);
+        if (u < 0)
+            return k;
+    }
+    return kmax;
+}
+
+static double pmf(double (*weight)(uint32_t), uint32_t k, uint32_t kmin, uint32_t kmax)
+{
+    if (k < kmin || k > kmax)
+        return 0;
+    double total = 0;
+    for (uint32_t j = kmin; j <= kmax; j++)
+        total += weight(j);
+    return weight(k) / total;
+}
+
+double fg_strokes_count_pmf(uint32_t k)
+{
+    return pmf(logseries_weight, k, 1, FG_MAX_STROKES);
+}
+
+uint32_t fg_strokes_draw_count(fg_rng *rng)
+{
+    return draw(rng, logseries_weight, 1, FG_MAX_STROKES);
+}
+
+double fg_strokes_interval_pmf(uint32_t k)
+{
+    return pmf(poisson_weight, k, 0, FG_STROKE_INTERVAL_MAX_K);
+}
+
+double fg_strokes_draw_interval_s(fg_rng *rng)
+{
+    uint32_t k = draw(rng, poisson_weight, 0, FG_STROKE_INTERVAL_MAX_K);
+    return FG_STROKE_INTERVAL_UNIT_S * (1.0 + k + fg_rng_uniform(rng));
+}
