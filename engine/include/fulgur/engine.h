@@ -27,7 +27,7 @@ typedef struct fg_engine_config {
     uint32_t max_block_frames;    /* 4096; the largest nframes render accepts, <= 65536 */
     uint32_t channels;            /* 2; 1 = one ear at the listener's centre, 2 = two ears */
     uint32_t max_voices;          /* 64; discharges alive at once (posted, sounding or uncollected) */
-    uint32_t segment_capacity;    /* 262144; segments held by all live voices together */
+    uint32_t segment_capacity;    /* 131072; segments held by all live voices together */
     double speed_of_sound_m_s;    /* 343; 331.5 + 0.6 * (temperature in degC) */
     double ear_spacing_m;         /* 0.18; distance between the two ears */
     double max_lookahead_s;       /* 0.25; cap on the motion look-ahead (see fg_engine_render) */

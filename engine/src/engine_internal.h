@@ -1,0 +1,81 @@
+/* The engine object, shared by the files that implement its calls. */
+#ifndef FULGUR_ENGINE_INTERNAL_H
+#define FULGUR_ENGINE_INTERNAL_H
+
+#include <stdatomic.h>
+#include <stdint.h>
+
+#include "arena_internal.h"
+#include "fulgur/engine.h"
+#include "listener_internal.h"
+#include "ring_internal.h"
+#include "voice_internal.h"
+
+typedef struct fg_counters {
+    atomic_uint_least64_t posted, dropped_posts, adopted, finished, collected;
+    atomic_uint_least64_t late_events, late_samples, skipped_repeats, blocks, blocks_over_budget;
+} fg_counters;
+
+/* Scratch for preparing one tree, preallocated for the largest. */
+typedef struct fg_prep_scratch {
+    double *path_m;        /* path length from the root */
+    uint32_t *junction;    /* deepest main-channel ancestor (or self) */
+    uint8_t *main;         /* node lies on the main channel */
+} fg_prep_scratch;
+
+struct fg_engine {
+    fg_engine_config cfg;
+
+    /* sim thread */
+    fg_voice *voices;
+    uint32_t *free_slots;
+    uint32_t free_count;
+    uint8_t *live;            /* posted and not yet collected, by slot */
+    fg_arena arena;
+    fg_prep_scratch scratch;
+
+    /* segment storage shared by all voices through the arena */
+    fg_event *events;
+    uint32_t *main_index;
+
+    fg_ring inbox;            /* sim -> audio: fg_voice * */
+    fg_ring garbage;          /* audio -> sim: fg_voice * */
+    fg_listener_cell listener;
+
+    /* audio thread */
+    fg_voice **active;
+    uint32_t active_count;
+    double *d3;               /* channels * max_block_frames */
+    fg_listener pose;         /* last pose read */
+    unsigned pose_serial;
+
+    atomic_uint_least64_t frames;
+    fg_counters counters;
+};
+
+/* Fills voice v (slot and storage already assigned) from a checked
+ * discharge, reading the current listener pose. [sim-thread] */
+void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d);
+
+/* Validates a discharge's parameters other than the tree. */
+fg_result fg_discharge_check(const fg_discharge *d);
+
+/* Renders voice v into the blocks; returns true when it has finished.
+ * [audio-thread] */
+typedef struct fg_block_context {
+    double start_frame;       /* engine clock at the block's first sample */
+    uint32_t frames;
+    const fg_ears *ears;
+    const double *position;   /* listener centre */
+    unsigned serial;
+    wm_block *blocks;         /* one per channel */
+} fg_block_context;
+
+void fg_voice_adopt(fg_engine *e, fg_voice *v, double start_frame);
+bool fg_voice_render(fg_engine *e, fg_voice *v, const fg_block_context *ctx);
+
+/* The shape of event ev for ear position ear, into ev's cache slot k. */
+void fg_event_geometry(const fg_engine *e, const fg_sound_params *p, fg_event *ev,
+                       const double ear[3], int k);
+
+#endif
