@@ -146,6 +146,9 @@ fg_result fg_engine_post(fg_engine *e, const fg_discharge *d, fg_voice_id *id)
 {
     if (!e || !d || !d->nodes)
         return FG_ERR_NULL;
+    /* the capacity first, so a wild count is never walked */
+    if (d->node_count > (size_t)e->cfg.segment_capacity + 1)
+        return FG_ERR_CAPACITY;
     fg_result r = fg_tree_check(d->nodes, d->node_count, NULL);
     if (r != FG_OK)
         return r;
@@ -153,8 +156,6 @@ fg_result fg_engine_post(fg_engine *e, const fg_discharge *d, fg_voice_id *id)
     if (r != FG_OK)
         return r;
     size_t segments = d->node_count - 1;
-    if (segments > e->cfg.segment_capacity)
-        return FG_ERR_CAPACITY;
     if (fg_ring_space(&e->inbox) == 0) {
         count(&e->counters.dropped_posts);
         return FG_ERR_QUEUE_FULL;
