@@ -228,11 +228,51 @@ static void test_dart_leaders(void **state)
     free(x);
 }
 
+/* fg_engine_stop on a lightning voice: no further stroke starts. Stopped
+ * 2 ms after the first stroke is heard (strokes are >= 10 ms apart), only
+ * the first stroke sounds, and the voice retires. */
+static void test_stop_lightning(void **state)
+{
+    (void)state;
+    const double fs = 48000;
+    const size_t frames = (size_t)(fs * 1.0);
+    float *x = calloc(frames, sizeof(float));
+    size_t on[64];
+    assert_non_null(x);
+    fg_node full[TREE_NODES];
+    lightning_tree(full, 1);
+    for (uint64_t seed = 1; seed <= 3; seed++) {
+        fg_engine *e = make_engine(fs, 1);
+        fg_discharge d = {.nodes = full, .node_count = TREE_NODES, .emit_time_s = 0.002,
+                          .strokes = 5, .seed = seed};
+        assert_int_equal(fg_preset_sound(FG_PRESET_PLASMA_BALL, &d.sound), FG_OK);
+        fg_voice_id id;
+        assert_int_equal(fg_engine_post(e, &d, &id), FG_OK);
+        /* the first stroke is heard at 2 ms + ~3.7 ms of travel */
+        size_t stop_frame = (size_t)(fs * 0.008);
+        float *planes[2] = {x, NULL};
+        fx_render(e, planes, 1, stop_frame, 64);
+        assert_int_equal(fg_engine_stop(e, id), FG_OK);
+        float *tail[2] = {x + stop_frame, NULL};
+        fx_render(e, tail, 1, frames - stop_frame, 64);
+        float peak = fx_peak(x, frames);
+        size_t n = fx_onsets(x, frames, 1e-4f * peak, (size_t)(0.005 * fs), on, 64);
+        CHECK(n == 1 && on[0] < stop_frame, "seed %llu: %zu bursts after stop",
+              (unsigned long long)seed, n);
+        fg_engine_stats st;
+        fg_engine_get_stats(e, &st);
+        CHECK(st.finished == 1, "seed %llu: not retired after stop", (unsigned long long)seed);
+        fg_engine_destroy(e);
+    }
+    free(x);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_continuous),
         cmocka_unit_test(test_dart_leaders),
+        cmocka_unit_test(test_stop_lightning),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
