@@ -23,10 +23,16 @@ static const char usage[] =
     "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n"
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
 
+/* A discharge's place in the posting order. */
+typedef struct post_slot {
+    double time_s;
+    size_t index;
+} post_slot;
+
 typedef struct render_job {
     const scene *s;
     fg_engine *engine;
-    size_t *order;          /* discharge indices by emit time */
+    post_slot *order;       /* the discharges by emit time, then index */
     size_t next;            /* the next of order to post */
     float *planes[2];
     float *interleaved;
@@ -41,13 +47,12 @@ static double now_s(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static const scene *sort_scene; /* qsort has no context argument */
-
 static int by_time(const void *a, const void *b)
 {
-    size_t i = *(const size_t *)a, k = *(const size_t *)b;
-    double ti = sort_scene->discharges[i].time_s, tk = sort_scene->discharges[k].time_s;
-    return ti < tk ? -1 : ti > tk ? 1 : (i > k) - (i < k);
+    const post_slot *x = a, *y = b;
+    if (x->time_s != y->time_s)
+        return x->time_s < y->time_s ? -1 : 1;
+    return (x->index > y->index) - (x->index < y->index);
 }
 
 static int create_engine(render_job *job, char *err, size_t err_size)
@@ -79,8 +84,7 @@ static int create_engine(render_job *job, char *err, size_t err_size)
         return -1;
     }
     for (size_t i = 0; i < s->discharge_count; i++)
-        job->order[i] = i;
-    sort_scene = s;
+        job->order[i] = (post_slot){s->discharges[i].time_s, i};
     qsort(job->order, s->discharge_count, sizeof *job->order, by_time);
     return 0;
 }
@@ -89,7 +93,7 @@ static int create_engine(render_job *job, char *err, size_t err_size)
 static int post_due(render_job *job, double horizon_s, char *err, size_t err_size)
 {
     for (; job->next < job->s->discharge_count; job->next++) {
-        size_t i = job->order[job->next];
+        size_t i = job->order[job->next].index;
         const scene_discharge *d = &job->s->discharges[i];
         if (d->time_s >= horizon_s)
             break;

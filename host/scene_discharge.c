@@ -45,7 +45,8 @@ static int parse_sound(const cJSON *obj, const char *base, fg_sound_params *p, c
                        err_size) ||
            json_number(obj, base, "ps0", (json_range){0, 1e7, .lo_open = true}, &p->ps0_pa, err,
                        err_size) ||
-           json_number(obj, base, "sigma0", (json_range){.lo = 0, .hi = 10}, &p->sigma0, err, err_size) ||
+           json_number(obj, base, "sigma0", (json_range){.lo = 0, .hi = 10}, &p->sigma0, err,
+                       err_size) ||
            json_number(obj, base, "t0_jitter", (json_range){0, 1, .hi_open = true},
                        &p->t0_jitter, err, err_size) ||
            json_number(obj, base, "return_stroke_speed", (json_range){0, 3e8, .lo_open = true},
@@ -131,8 +132,8 @@ int scene_parse_discharge(const cJSON *item, const char *path, size_t index, con
     json_path_key(key, sizeof key, path, "description");
     if (desc && !cJSON_IsString(desc))
         return json_fail(err, err_size, key, "expected a string");
-    if (json_number(item, path, "time", (json_range){.lo = 0, .hi = SCENE_MAX_DURATION_S}, &d->time_s, err,
-                    err_size) ||
+    if (json_number(item, path, "time", (json_range){.lo = 0, .hi = SCENE_MAX_DURATION_S},
+                    &d->time_s, err, err_size) ||
         parse_preset(item, path, d, err, err_size) ||
         parse_sound(item, path, &d->sound, err, err_size) ||
         json_number(item, path, "strokes", (json_range){0, FG_MAX_STROKES, .integer = true},

@@ -44,7 +44,8 @@ static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_siz
                     err_size) ||
         json_number(json, "", "speed_of_sound", (json_range){.lo = 100, .hi = 1000}, &speed, err,
                     err_size) ||
-        json_number(json, "", "temperature_c", (json_range){.lo = -90, .hi = 60}, &temp, err, err_size))
+        json_number(json, "", "temperature_c", (json_range){.lo = -90, .hi = 60}, &temp, err,
+                    err_size))
         return -1;
     if (cJSON_GetObjectItemCaseSensitive(json, "temperature_c")) {
         if (cJSON_GetObjectItemCaseSensitive(json, "speed_of_sound"))
