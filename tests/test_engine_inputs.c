@@ -544,6 +544,31 @@ static void test_create(void **state)
               "%s: in use %g Hz, %u channels", cc->name, used.sample_rate_hz, used.channels);
         fg_engine_destroy(e);
     }
+    /* NULL config: every default as the header documents it */
+    fg_engine *e;
+    assert_int_equal(fg_engine_create(NULL, &e), FG_OK);
+    fg_engine_config used, dflt;
+    fg_engine_get_config(e, &used);
+    fg_engine_config_default(&dflt);
+    fg_engine_destroy(e);
+    CHECK(memcmp(&used, &dflt, sizeof used) == 0, "create(NULL) differs from the defaults");
+    const fg_engine_config documented = {
+        .sample_rate_hz = 48000, .max_block_frames = 4096, .channels = 2, .max_voices = 64,
+        .segment_capacity = 131072, .speed_of_sound_m_s = 343, .ear_spacing_m = 0.18,
+        .max_lookahead_s = 0.25, .max_adopt_per_block = 8,
+    };
+    CHECK(dflt.sample_rate_hz == documented.sample_rate_hz &&
+              dflt.max_block_frames == documented.max_block_frames &&
+              dflt.channels == documented.channels && dflt.max_voices == documented.max_voices &&
+              dflt.speed_of_sound_m_s == documented.speed_of_sound_m_s &&
+              dflt.ear_spacing_m == documented.ear_spacing_m &&
+              dflt.max_lookahead_s == documented.max_lookahead_s &&
+              dflt.max_adopt_per_block == documented.max_adopt_per_block,
+          "a default differs from engine.h");
+    CHECK(dflt.segment_capacity == documented.segment_capacity,
+          "default segment_capacity %u, engine.h documents %u", dflt.segment_capacity,
+          documented.segment_capacity);
+
     /* the no-ops on NULL */
     fg_engine_destroy(NULL);
     CHECK(fg_engine_collect(NULL) == 0, "collect(NULL) reclaimed something");
