@@ -337,7 +337,11 @@ static void test_short_spark_energy(void **state)
         free(pf);
         double box_energy = q2 / FS_HZ, cont_energy = p2 / FS_HZ;
 
-        CHECK(fabs(mean_box - box_energy) <= 2e-3 * box_energy,
+        /* exact but for the quadratures: with s > 0 p is continuous and
+         * both rules agree to ~1e-7; the broadside N-wave jumps, and the
+         * fine grid's running sum then errs by ~1/SUB */
+        double tol = sc->s > 0 ? 1e-6 : 1e-3;
+        CHECK(fabs(mean_box - box_energy) <= tol * box_energy,
               "%s: offset-mean energy %.6g vs box-filtered %.6g", sc->name, mean_box, box_energy);
         /* point sampling jumps with the offset: the midpoint rule is coarser */
         CHECK(fabs(mean_point - cont_energy) <= 1e-2 * cont_energy,
