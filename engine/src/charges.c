@@ -177,6 +177,10 @@ static fg_result advance(grower *g, const tip *t, int *done)
     double phi = potential(p->charges, p->charge_count, a);
     fg_charges_field(p->charges, p->charge_count, phi, g->sign, g->cand, p->candidates,
                      p->step_m, g->e);
+    if (p->target_radius_m > 0) /* the ground bounds the air even when it is not the target */
+        for (uint32_t k = 0; k < p->candidates; k++)
+            if (g->cand[k].z <= 0)
+                g->e[k] = 0;
     memcpy(g->e_saved, g->e, p->candidates * sizeof *g->e);
     size_t got = fg_charges_choose(&g->rng, g->cand, g->e, p->candidates, p->chosen,
                                    p->exclusion_m, g->chosen);

@@ -14,7 +14,8 @@
  *      already chosen is skipped. The first drawn continues the tip, the
  *      others start branches.
  *   4. Stop when a tip reaches the target: the ground (z <= 0) or, when
- *      target_radius_m > 0, the sphere around target_m.
+ *      target_radius_m > 0, the sphere around target_m (an intracloud
+ *      discharge; candidates below the ground then get E = 0).
  * Choices of ours, where Abe's text leaves room:
  *   - Abe takes "the N most probable" candidates; with our random candidate
  *     directions we draw them instead, so that P_k is the probability of
