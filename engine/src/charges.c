@@ -12,6 +12,10 @@
 #define DEFAULT_MAX_NODES 200000
 #define MAX_CANDIDATES 4096
 #define MAX_TIPS 4096
+/* In a uniform field each random candidate goes backward with probability
+ * 1/2, so all M = 8 of them do once in 256 draws: a tip draws again (up to
+ * this many times) before it is given up. */
+#define REDRAWS 16
 /* Distance from a charge below which the potential is taken as at 1 nm. */
 #define MIN_DISTANCE_M 1e-9
 
@@ -172,15 +176,19 @@ static fg_result advance(grower *g, const tip *t, int *done)
     const fg_charges_params *p = g->p;
     const fg_node *n = &fg_tree_nodes(g->tree)[t->node];
     fg_vec3 a = fg_v3(n->x, n->y, n->z);
-    for (uint32_t k = 0; k < p->candidates; k++)
-        g->cand[k] = fg_v3_add(a, fg_v3_scale(fg_v3_random_unit(&g->rng), p->step_m));
     double phi = potential(p->charges, p->charge_count, a);
-    fg_charges_field(p->charges, p->charge_count, phi, g->sign, g->cand, p->candidates,
-                     p->step_m, g->e);
-    if (p->target_radius_m > 0) /* the ground bounds the air even when it is not the target */
+    int any = 0;
+    for (int draw = 0; draw < REDRAWS && !any; draw++) {
         for (uint32_t k = 0; k < p->candidates; k++)
-            if (g->cand[k].z <= 0)
-                g->e[k] = 0;
+            g->cand[k] = fg_v3_add(a, fg_v3_scale(fg_v3_random_unit(&g->rng), p->step_m));
+        fg_charges_field(p->charges, p->charge_count, phi, g->sign, g->cand, p->candidates,
+                         p->step_m, g->e);
+        for (uint32_t k = 0; k < p->candidates; k++) {
+            if (p->target_radius_m > 0 && g->cand[k].z <= 0)
+                g->e[k] = 0; /* the ground bounds the air even when it is not the target */
+            any |= g->e[k] > 0;
+        }
+    }
     memcpy(g->e_saved, g->e, p->candidates * sizeof *g->e);
     size_t got = fg_charges_choose(&g->rng, g->cand, g->e, p->candidates, p->chosen,
                                    p->exclusion_m, g->chosen);

@@ -23,7 +23,8 @@
  *   - A candidate that goes back up the potential (toward the origin's side:
  *     sign(Phi_k - Phi_i) opposite to sign(Phi_target - Phi_root)) gets
  *     E_k = 0; with |.| alone a uniform field would send the leader back as
- *     often as forward.
+ *     often as forward. A tip whose M candidates all go back draws a new
+ *     set, up to 16 times, before it stops.
  *   - Every chosen candidate becomes a tip, so tips would multiply as N^rounds;
  *     at most max_tips stay active, those of strongest E; the others stop
  *     (the dead ends of the real stepped leader).

@@ -81,7 +81,7 @@ typedef struct fg_lightning_params {
     double turn_mean_deg;       /* mean direction change per segment: 16; < 90 */
     double max_deviation_deg;   /* free wander from the heading: 45; < 180 */
     double lookahead_m;         /* main channel's heading target ahead on the skeleton: 60 */
-    double branch_probability;  /* per node: 0.014; negative: no branches; <= 1 */
+    double branch_probability;  /* per node: 0.0137; negative: no branches; <= 1 */
     double branch_length_m;     /* mean length of a first-order branch: 400 */
     uint32_t branch_depth;      /* deepest branch order: 2; at most 8 */
     const fg_thunder_block *blocks; /* borrowed for the call; may be NULL if block_count is 0 */
