@@ -72,9 +72,11 @@ static fg_result check_blocks(const fg_thunder_block *b, size_t n)
     return FG_OK;
 }
 
-#define DEFAULT(field, value) \
-    if (p.field == 0)         \
-    p.field = (value)
+#define DEFAULT(field, value)  \
+    do {                       \
+        if (p.field == 0)      \
+            p.field = (value); \
+    } while (0)
 
 fg_result fg_lightning_params_resolve(const fg_lightning_params *in, fg_lightning_params *out)
 {
@@ -95,8 +97,6 @@ fg_result fg_lightning_params_resolve(const fg_lightning_params *in, fg_lightnin
     fg_result r;
     if (p.skeleton_m && (r = check_skeleton(p.skeleton_m, p.skeleton_points)) != FG_OK)
         return r;
-    if (p.skeleton_m == NULL && p.skeleton_points > 0)
-        return FG_ERR_NULL;
     if ((r = check_blocks(p.blocks, p.block_count)) != FG_OK)
         return r;
     DEFAULT(height_m, DEFAULT_HEIGHT_M);

@@ -94,7 +94,8 @@ typedef struct fg_lightning_params {
 /* Where each block ended up on the main channel. */
 typedef struct fg_lightning_stretch {
     size_t first_node, last_node; /* main-channel nodes whose projection on the
-                                     skeleton falls in the block (inclusive) */
+                                     skeleton falls in the block (inclusive);
+                                     first_node = main_nodes if none does */
     double distance_m;            /* listener to the skeleton at the block's start;
                                      for a clap, the arc's radius */
 } fg_lightning_stretch;
