@@ -35,7 +35,7 @@
  *          the stretch coincides (at distance_m / c).
  *   rumble the stretch becomes a straight line (1 - a) 30 + 5 degrees off the
  *          line of sight (a = amplitude): nearly end-on, so its arrivals are
- *          spread over about its length / c and its kinks are few.
+ *          spread over about its length / c.
  *   roar   the stretch keeps its course but turns harder: the mean turn is
  *          multiplied by 1 + 3 a.
  * A clap or rumble stretch starts at the skeleton's own point at `start`
