@@ -3,8 +3,8 @@
 #include <string.h>
 
 #include "charges_internal.h"
+#include "fulgur/sound.h"
 
-#define DEFAULT_STEP_M 3.0
 #define DEFAULT_CANDIDATES 8
 #define DEFAULT_CHOSEN 2
 #define DEFAULT_EXCLUSION_STEPS 0.75
@@ -61,8 +61,11 @@ fg_result fg_charges_params_resolve(const fg_charges_params *in, fg_charges_para
         return FG_ERR_NOT_FINITE;
     if (p.step_m < 0 || p.exclusion_m < 0 || p.target_radius_m < 0)
         return FG_ERR_ARGUMENT;
+    fg_preset_scale scale;
+    if (fg_preset_get_scale(FG_PRESET_LIGHTNING, &scale) != FG_OK)
+        return FG_ERR_ARGUMENT;
     if (p.step_m == 0)
-        p.step_m = DEFAULT_STEP_M;
+        p.step_m = 2 * scale.half_step_m; /* a segment is 2 l long */
     if (p.candidates == 0)
         p.candidates = DEFAULT_CANDIDATES;
     if (p.chosen == 0)

@@ -3,9 +3,9 @@
 #include <stdlib.h>
 
 #include "designer_internal.h"
+#include "fulgur/sound.h"
 
 #define DEFAULT_HEIGHT_M 5000.0
-#define DEFAULT_SEGMENT_M 3.0
 #define DEFAULT_TURN_MEAN_DEG 16.0
 #define DEFAULT_MAX_DEVIATION_DEG 45.0
 #define DEFAULT_LOOKAHEAD_M 60.0
@@ -100,7 +100,10 @@ fg_result fg_lightning_params_resolve(const fg_lightning_params *in, fg_lightnin
     if ((r = check_blocks(p.blocks, p.block_count)) != FG_OK)
         return r;
     DEFAULT(height_m, DEFAULT_HEIGHT_M);
-    DEFAULT(segment_m, DEFAULT_SEGMENT_M);
+    fg_preset_scale scale;
+    if (fg_preset_get_scale(FG_PRESET_LIGHTNING, &scale) != FG_OK)
+        return FG_ERR_ARGUMENT;
+    DEFAULT(segment_m, 2 * scale.half_step_m); /* a segment is 2 l long */
     DEFAULT(turn_mean_deg, DEFAULT_TURN_MEAN_DEG);
     DEFAULT(max_deviation_deg, DEFAULT_MAX_DEVIATION_DEG);
     DEFAULT(lookahead_m, DEFAULT_LOOKAHEAD_M);

@@ -77,7 +77,7 @@ typedef struct fg_lightning_params {
     size_t skeleton_points;     /* 2 .. FG_LIGHTNING_MAX_SKELETON when given */
     double strike_m[2];         /* random skeleton: x, y of the strike point (z = 0) */
     double height_m;            /* random skeleton: height of the root: 5000 */
-    double segment_m;           /* walk step: 3 */
+    double segment_m;           /* walk step: 3 (2 l of the lightning preset) */
     double turn_mean_deg;       /* mean direction change per segment: 16; < 90 */
     double max_deviation_deg;   /* free wander from the heading: 45; < 180 */
     double lookahead_m;         /* main channel's heading target ahead on the skeleton: 60 */
