@@ -13,7 +13,13 @@
  * k = deviation / max_deviation_deg, at most 1). The heading of the main
  * channel points at the skeleton lookahead_m ahead of the walk's projection
  * on it, so the channel is tortuous yet follows the skeleton. The turn law
- * is exact: the angles between consecutive segments are the drawn thetas.
+ * is exact: the angles between consecutive segments are the drawn thetas
+ * (except on clap stretches, below, and within 4 segments of the skeleton's
+ * end, which the walk joins in a straight line).
+ *
+ * The random skeleton: its root at height_m, drifted up to 0.2 height_m
+ * sideways from the strike point, then eight pieces down to the strike, each
+ * joint jittered up to 0.08 height_m sideways and 0.04 height_m up or down.
  *
  * Branches: every node of a channel of depth below branch_depth (the main
  * channel has depth 0) starts a branch with probability branch_probability.
