@@ -72,7 +72,8 @@ typedef enum fg_thunder_feature {
 
 typedef struct fg_thunder_block {
     fg_thunder_feature feature;
-    double start, end;  /* fractions of the skeleton's length from the root, 0 <= start < end <= 1 */
+    double start, end;  /* fractions of the skeleton's length from the root:
+                           0 <= start < end <= 1 */
     double amplitude;   /* strength of the shaping, (0, 1]; 0 means 1 */
 } fg_thunder_block;
 
