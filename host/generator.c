@@ -5,9 +5,12 @@
 #include <string.h>
 
 #include "generator.h"
+#include "generator_lightning.h"
 
 static const gen_entry table[] = {
-    {NULL, NULL}, /* the end; no generator has landed yet */
+    {"lightning", gen_lightning},
+    {"charges", gen_charges},
+    {NULL, NULL}, /* the end */
 };
 
 const gen_entry *gen_find(const char *type)

@@ -3,7 +3,9 @@
 #define FULGUR_FULGUR_H
 
 #include "fulgur/defs.h"
+#include "fulgur/charges.h"
 #include "fulgur/engine.h"
+#include "fulgur/lightning.h"
 #include "fulgur/result.h"
 #include "fulgur/sound.h"
 #include "fulgur/tree.h"
