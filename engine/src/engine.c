@@ -86,10 +86,12 @@ fg_result fg_engine_create(const fg_engine_config *config, fg_engine **out)
     e->scratch.path_m = calloc(nodes, sizeof *e->scratch.path_m);
     e->scratch.junction = calloc(nodes, sizeof *e->scratch.junction);
     e->scratch.main = calloc(nodes, 1);
+    e->scratch.order = calloc(nodes, sizeof *e->scratch.order);
+    e->scratch.order_tmp = calloc(nodes, sizeof *e->scratch.order_tmp);
     e->d3 = calloc((size_t)cfg.channels * cfg.max_block_frames, sizeof *e->d3);
     bool ok = e->voices && e->free_slots && e->live && e->active && e->events &&
               e->main_index && e->scratch.path_m && e->scratch.junction && e->scratch.main &&
-              e->d3;
+              e->scratch.order && e->scratch.order_tmp && e->d3;
     ok = ok && fg_arena_init(&e->arena, cfg.segment_capacity, cfg.max_voices);
     ok = ok && fg_ring_init(&e->inbox, cfg.max_voices);
     ok = ok && fg_ring_init(&e->garbage, cfg.max_voices);
@@ -119,6 +121,8 @@ void fg_engine_destroy(fg_engine *e)
     fg_ring_deinit(&e->garbage);
     fg_arena_deinit(&e->arena);
     free(e->d3);
+    free(e->scratch.order_tmp);
+    free(e->scratch.order);
     free(e->scratch.main);
     free(e->scratch.junction);
     free(e->scratch.path_m);

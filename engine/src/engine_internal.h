@@ -9,6 +9,7 @@
 #include "fulgur/engine.h"
 #include "listener_internal.h"
 #include "ring_internal.h"
+#include "sort_internal.h"
 #include "voice_internal.h"
 
 typedef struct fg_counters {
@@ -21,6 +22,8 @@ typedef struct fg_prep_scratch {
     double *path_m;        /* path length from the root */
     uint32_t *junction;    /* deepest main-channel ancestor (or self) */
     uint8_t *main;         /* node lies on the main channel */
+    fg_sort_pair *order;   /* the arrival sort, and its scratch */
+    fg_sort_pair *order_tmp;
 } fg_prep_scratch;
 
 struct fg_engine {

@@ -2,7 +2,6 @@
  * stroke timing, T0 fluctuation, geometry at the current pose, the arrival
  * sort and the strokes. Sim thread; uses only preallocated storage. */
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "engine_internal.h"
@@ -68,12 +67,29 @@ static size_t mark_main_channel(const fg_node *nodes, size_t n, fg_prep_scratch 
     return strike;
 }
 
-static int by_start(const void *a, const void *b)
+/* Puts events in arrival order: a radix sort of the keys, then the
+ * permutation applied in place, cycle by cycle. */
+static void sort_by_start(fg_event *events, uint32_t n, fg_prep_scratch *s)
 {
-    const fg_event *x = a, *y = b;
-    if (x->start_s != y->start_s)
-        return x->start_s < y->start_s ? -1 : 1;
-    return (x->segment > y->segment) - (x->segment < y->segment);
+    for (uint32_t i = 0; i < n; i++)
+        s->order[i] = (fg_sort_pair){fg_sort_key(events[i].start_s), i};
+    fg_sort_pairs(s->order, s->order_tmp, n);
+    for (uint32_t i = 0; i < n; i++) {
+        if (s->order[i].index == i)
+            continue;
+        fg_event held = events[i];
+        uint32_t j = i;
+        for (;;) {
+            uint32_t k = s->order[j].index;
+            s->order[j].index = j;
+            if (k == i) {
+                events[j] = held;
+                break;
+            }
+            events[j] = events[k];
+            j = k;
+        }
+    }
 }
 
 void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
@@ -131,7 +147,7 @@ void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
         }
     }
     v->event_count = (uint32_t)(n - 1);
-    qsort(v->events, v->event_count, sizeof *v->events, by_start);
+    sort_by_start(v->events, v->event_count, s);
     v->main_count = 0;
     for (uint32_t k = 0; k < v->event_count; k++)
         if (v->events[k].main)

@@ -105,6 +105,7 @@ void wm_block_begin(wm_block *b, double *d3, size_t n)
     b->d3 = d3;
     b->n = n;
     b->state[0] = b->state[1] = b->state[2] = 0.0;
+    b->touched = false;
     memset(d3, 0, n * sizeof *d3);
 }
 
@@ -166,17 +167,24 @@ wm_status wm_block_add(wm_block *b, const wm_event *e)
     }
     if (hi != LONG_MIN)
         add_range(b, e, lo, hi);
+    b->touched = true;
     return WM_SOUNDING;
 }
 
+/* Three running sums rather than one third-order recurrence: each carries
+ * only an add from sample to sample, so the loop is not latency-bound. */
 void wm_block_end(const wm_block *b, float *out, float gain)
 {
-    double y1 = b->state[0], y2 = b->state[1], y3 = b->state[2];
+    if (!b->touched)
+        return;
+    const double *s = b->state;
+    double d2 = s[0] - 2.0 * s[1] + s[2]; /* second difference at -1 */
+    double d1 = s[0] - s[1];              /* first difference at -1 */
+    double y = s[0];
     for (size_t k = 0; k < b->n; k++) {
-        double y = b->d3[k] + 3.0 * y1 - 3.0 * y2 + y3;
+        d2 += b->d3[k];
+        d1 += d2;
+        y += d1;
         out[k] += gain * (float)y;
-        y3 = y2;
-        y2 = y1;
-        y1 = y;
     }
 }

@@ -3,6 +3,7 @@
 #ifndef FULGUR_WMWAVE_INTERNAL_H
 #define FULGUR_WMWAVE_INTERNAL_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "fulgur/sound.h"
@@ -51,6 +52,7 @@ typedef struct wm_block {
     double *d3;        /* n entries, zeroed by wm_block_begin */
     size_t n;
     double state[3];   /* y[-1], y[-2], y[-3] */
+    bool touched;      /* some event contributed */
 } wm_block;
 
 typedef enum wm_status {
@@ -66,7 +68,8 @@ void wm_block_begin(wm_block *b, double *d3, size_t n);
  * three for the state, whatever the waveform's length. */
 wm_status wm_block_add(wm_block *b, const wm_event *e);
 
-/* Integrates the block into y[0..n), adding gain * y into out. */
+/* Integrates the block into y[0..n), adding gain * y into out. An untouched
+ * block adds nothing. */
 void wm_block_end(const wm_block *b, float *out, float gain);
 
 #endif

@@ -1,0 +1,47 @@
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "bench_render.h"
+#include "bench_util.h"
+
+static void check(fg_result r, const char *what)
+{
+    if (r != FG_OK) {
+        fprintf(stderr, "%s: %s\n", what, fg_result_str(r));
+        exit(1);
+    }
+}
+
+bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_params *params,
+                            const fg_listener *listener, unsigned block)
+{
+    fg_engine_config cfg = {.sample_rate_hz = 48000, .max_block_frames = block,
+                            .segment_capacity = (uint32_t)count, .max_voices = 1};
+    fg_engine *e;
+    check(fg_engine_create(&cfg, &e), "create");
+    check(fg_engine_set_listener(e, listener), "listener");
+    float *planes[2] = {malloc(block * sizeof(float)), malloc(block * sizeof(float))};
+    fg_discharge d = {.nodes = nodes, .node_count = count, .sound = *params, .strokes = 1,
+                      .emit_time_s = 0, .seed = 1};
+    bench_run run = {0};
+    double t0 = bench_now_s();
+    check(fg_engine_post(e, &d, NULL), "post");
+    double t1 = bench_now_s();
+    fg_engine_stats st = {0};
+    uint64_t frames = 0;
+    while (st.finished == 0) {
+        check(fg_engine_render(e, planes, block), "render");
+        for (unsigned i = 0; i < block; i++)
+            run.energy += (double)planes[0][i] * planes[0][i];
+        frames += block;
+        fg_engine_get_stats(e, &st);
+    }
+    double t2 = bench_now_s();
+    run.post_s = t1 - t0;
+    run.render_s = t2 - t1;
+    run.sound_s = (double)frames / 48000.0;
+    free(planes[0]);
+    free(planes[1]);
+    fg_engine_destroy(e);
+    return run;
+}

@@ -1,0 +1,22 @@
+/* Timing one discharge through the engine's real path: post, then pull
+ * blocks offline as fast as possible until the voice has finished. */
+#ifndef FULGUR_BENCH_RENDER_H
+#define FULGUR_BENCH_RENDER_H
+
+#include <stddef.h>
+
+#include "fulgur/fulgur.h"
+
+typedef struct bench_run {
+    double post_s;     /* fg_engine_post: preparation and the arrival sort */
+    double render_s;   /* every fg_engine_render call until the voice ended */
+    double sound_s;    /* length of the sound produced */
+    double energy;     /* sum of squares of channel 0, to keep the work honest */
+} bench_run;
+
+/* Renders nodes[0..count) as one discharge with params heard from
+ * listener, in blocks of block frames at 48 kHz. Exits on an engine error. */
+bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_params *params,
+                            const fg_listener *listener, unsigned block);
+
+#endif

@@ -1,0 +1,30 @@
+/* Shared helpers of the benchmark programs: a monotonic clock, medians,
+ * a least-squares line, and CSV output. */
+#ifndef FULGUR_BENCH_UTIL_H
+#define FULGUR_BENCH_UTIL_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+double bench_now_s(void);
+
+/* Median of v[0..n) (sorts v in place). */
+double bench_median(double *v, size_t n);
+
+/* The value below which a fraction q of v[0..n) lies (sorts v). */
+double bench_quantile(double *v, size_t n, double q);
+
+typedef struct bench_fit {
+    double slope, intercept, r2;
+} bench_fit;
+
+bench_fit bench_fit_line(const double *x, const double *y, size_t n);
+
+/* Opens bench/results/NAME for writing (directory given by the
+ * FULGUR_RESULTS environment variable, default bench/results), or exits. */
+FILE *bench_open_result(const char *name);
+
+/* A one-line description of this machine's processor, for the results. */
+void bench_machine(char *buf, size_t size);
+
+#endif
