@@ -18,6 +18,7 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stdatomic.h>
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <time.h>
@@ -44,6 +45,7 @@ typedef struct scheduled {
     double at_s;       /* engine time of the post (or stop) */
     post_kind kind;
     uint32_t strokes;  /* lightning: 0 draws from the log-series law */
+    double duration_s; /* plasma: 0 sounds until POST_STOP_PLASMA */
 } scheduled;
 
 #define SPARK_FIRST_S 0.05
@@ -51,11 +53,12 @@ typedef struct scheduled {
 #define SPARKS 180 /* until 9 s: every voice has ended by the tenth second */
 
 static const scheduled plan[] = {
-    {0.2, POST_LIGHTNING, 0},
-    {1.0, POST_PLASMA, 0},
-    {1.5, POST_LIGHTNING, 4},
-    {3.0, POST_LIGHTNING, 6},
-    {5.0, POST_STOP_PLASMA, 0},
+    {0.2, POST_LIGHTNING, 0, 0},
+    {1.0, POST_PLASMA, 0, 0},
+    {1.5, POST_LIGHTNING, 4, 0},
+    {3.0, POST_LIGHTNING, 6, 0},
+    {5.0, POST_STOP_PLASMA, 0, 0},
+    {6.0, POST_PLASMA, 0, 0.5},
 };
 #define PLAN_LEN (sizeof plan / sizeof plan[0])
 
@@ -89,11 +92,15 @@ static void flag_main_channel(fg_node *nodes, size_t count)
     nodes[0].flags |= FG_NODE_MAIN;
 }
 
-static fg_result post(shared *sh, fg_rng *rng, post_kind kind, uint32_t strokes, double at_s,
-                      fg_voice_id *id)
+static fg_result post(shared *sh, fg_rng *rng, const scheduled *s, fg_voice_id *id)
 {
+    post_kind kind = s->kind;
+    double at_s = s->at_s;
     fg_node nodes[MAX_NODES];
-    fg_discharge d = {.nodes = nodes, .emit_time_s = at_s + EMIT_AHEAD_S, .seed = fg_rng_next(rng)};
+    fg_discharge d = {.nodes = nodes,
+                      .emit_time_s = at_s + EMIT_AHEAD_S,
+                      .strokes = s->strokes,
+                      .seed = fg_rng_next(rng)};
     const double down[3] = {0, 0, -1.2}, around[3] = {0, 0, 0};
     fg_preset preset = FG_PRESET_SPARK_BALLS;
     if (kind == POST_LIGHTNING) {
@@ -102,13 +109,13 @@ static fg_result post(shared *sh, fg_rng *rng, post_kind kind, uint32_t strokes,
         d.node_count = 400;
         random_tree(rng, nodes, d.node_count, root, 3.0, down, 0.1);
         flag_main_channel(nodes, d.node_count);
-        d.strokes = strokes;
         preset = FG_PRESET_LIGHTNING;
     } else if (kind == POST_PLASMA) {
         const double root[3] = {0, 0, 1.2};
         d.node_count = 80;
         random_tree(rng, nodes, d.node_count, root, 0.02, around, 0.3);
         d.continuous = 1;
+        d.duration_s = s->duration_s;
         preset = FG_PRESET_PLASMA_BALL;
     } else {
         /* sparks 1-2 m from the centre of the listener's circle, half of
@@ -116,7 +123,6 @@ static fg_result post(shared *sh, fg_rng *rng, post_kind kind, uint32_t strokes,
         const double root[3] = {fg_rng_range(rng, -1, 1), 1 + fg_rng_uniform(rng), 1.5};
         d.node_count = 2 + (size_t)(fg_rng_uniform(rng) * 39);
         random_tree(rng, nodes, d.node_count, root, 0.002, down, 0.1);
-        d.strokes = 1;
         if (fg_rng_uniform(rng) < 0.5)
             d.emit_time_s = FG_EMIT_NOW;
     }
@@ -140,14 +146,14 @@ static void *producer_main(void *arg)
                 sh->stop_result = fg_engine_stop(sh->engine, plasma);
                 continue;
             }
-            fg_result r = post(sh, &rng, s->kind, s->strokes, s->at_s,
-                               s->kind == POST_PLASMA ? &plasma : NULL);
+            bool stopped_by_plan = s->kind == POST_PLASMA && s->duration_s == 0;
+            fg_result r = post(sh, &rng, s, stopped_by_plan ? &plasma : NULL);
             sh->posts++;
             sh->post_errors += r != FG_OK;
         }
         while (next_spark < SPARKS && SPARK_FIRST_S + SPARK_EVERY_S * next_spark <= now_s) {
-            fg_result r =
-                post(sh, &rng, POST_SPARK, 1, SPARK_FIRST_S + SPARK_EVERY_S * next_spark, NULL);
+            const scheduled spark = {SPARK_FIRST_S + SPARK_EVERY_S * next_spark, POST_SPARK, 1, 0};
+            fg_result r = post(sh, &rng, &spark, NULL);
             next_spark++;
             sh->posts++;
             sh->post_errors += r != FG_OK;
@@ -248,7 +254,7 @@ static void test_ten_seconds_armed(void **state)
     assert_int_equal(st.blocks, BLOCKS);
     assert_int_equal(st.posted, sh.posts);
     assert_int_equal(st.adopted, sh.posts);
-    assert_int_equal(st.finished, sh.posts); /* the plasma ball stopped */
+    assert_int_equal(st.finished, sh.posts); /* both plasma balls stopped */
     assert_int_equal(st.collected, sh.posts);
     assert_int_equal(sh.collected, sh.posts);
     assert_int_equal(st.late_events, 0);
