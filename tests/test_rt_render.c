@@ -35,7 +35,7 @@
 #define BLOCKS (SECONDS * 48000 / BLOCK)
 #define LAG_S 0.02        /* how far the producer may fall behind the clock */
 #define EMIT_AHEAD_S 0.1  /* explicit emit times lie this far after the post */
-#define MAX_NODES 600
+#define MAX_NODES 400
 #define ORBIT_M 2.0       /* the listener's circle, radius */
 #define ORBIT_RAD_S 0.5   /* and angular speed: 1 m/s */
 
@@ -92,68 +92,69 @@ static void flag_main_channel(fg_node *nodes, size_t count)
     nodes[0].flags |= FG_NODE_MAIN;
 }
 
-static fg_result post(shared *sh, fg_rng *rng, const scheduled *s, fg_voice_id *id)
+/* Posts s; key seeds its tree, so every run posts the same trees whatever
+ * the threads' timing. */
+static fg_result post(shared *sh, const scheduled *s, uint64_t key, fg_voice_id *id)
 {
-    post_kind kind = s->kind;
-    double at_s = s->at_s;
+    fg_rng rng;
+    fg_rng_seed(&rng, key);
     fg_node nodes[MAX_NODES];
     fg_discharge d = {.nodes = nodes,
-                      .emit_time_s = at_s + EMIT_AHEAD_S,
+                      .emit_time_s = s->at_s + EMIT_AHEAD_S,
                       .strokes = s->strokes,
-                      .seed = fg_rng_next(rng)};
+                      .seed = fg_rng_next(&rng)};
     const double down[3] = {0, 0, -1.2}, around[3] = {0, 0, 0};
     fg_preset preset = FG_PRESET_SPARK_BALLS;
-    if (kind == POST_LIGHTNING) {
+    if (s->kind == POST_LIGHTNING) {
         /* a bolt from 500 m up, a few hundred metres away */
-        const double root[3] = {150 + 50 * fg_rng_uniform(rng), 100, 500};
-        d.node_count = 400;
-        random_tree(rng, nodes, d.node_count, root, 3.0, down, 0.1);
+        const double root[3] = {150 + 50 * fg_rng_uniform(&rng), 100, 500};
+        d.node_count = MAX_NODES;
+        random_tree(&rng, nodes, d.node_count, root, 3.0, down, 0.1);
         flag_main_channel(nodes, d.node_count);
         preset = FG_PRESET_LIGHTNING;
-    } else if (kind == POST_PLASMA) {
+    } else if (s->kind == POST_PLASMA) {
         const double root[3] = {0, 0, 1.2};
         d.node_count = 80;
-        random_tree(rng, nodes, d.node_count, root, 0.02, around, 0.3);
+        random_tree(&rng, nodes, d.node_count, root, 0.02, around, 0.3);
         d.continuous = 1;
         d.duration_s = s->duration_s;
         preset = FG_PRESET_PLASMA_BALL;
     } else {
         /* sparks 1-2 m from the centre of the listener's circle, half of
          * them emitted "now" */
-        const double root[3] = {fg_rng_range(rng, -1, 1), 1 + fg_rng_uniform(rng), 1.5};
-        d.node_count = 2 + (size_t)(fg_rng_uniform(rng) * 39);
-        random_tree(rng, nodes, d.node_count, root, 0.002, down, 0.1);
-        if (fg_rng_uniform(rng) < 0.5)
+        const double root[3] = {fg_rng_range(&rng, -1, 1), 1 + fg_rng_uniform(&rng), 1.5};
+        d.node_count = 2 + (size_t)(fg_rng_uniform(&rng) * 39);
+        random_tree(&rng, nodes, d.node_count, root, 0.002, down, 0.1);
+        if (fg_rng_uniform(&rng) < 0.5)
             d.emit_time_s = FG_EMIT_NOW;
     }
-    fg_result r = fg_preset_sound(preset, &d.sound);
-    return r != FG_OK ? r : fg_engine_post(sh->engine, &d, id);
+    fg_result res = fg_preset_sound(preset, &d.sound);
+    return res != FG_OK ? res : fg_engine_post(sh->engine, &d, id);
 }
 
 static void *producer_main(void *arg)
 {
     shared *sh = arg;
-    fg_rng rng;
-    fg_rng_seed(&rng, 7);
     size_t next_plan = 0, next_spark = 0;
     fg_voice_id plasma = 0;
     while (!atomic_load_explicit(&sh->quit, memory_order_acquire)) {
         uint64_t frames = fg_engine_frames(sh->engine);
         double now_s = (double)frames / FS;
         while (next_plan < PLAN_LEN && plan[next_plan].at_s <= now_s) {
-            const scheduled *s = &plan[next_plan++];
+            const scheduled *s = &plan[next_plan];
+            uint64_t key = next_plan++;
             if (s->kind == POST_STOP_PLASMA) {
                 sh->stop_result = fg_engine_stop(sh->engine, plasma);
                 continue;
             }
             bool stopped_by_plan = s->kind == POST_PLASMA && s->duration_s == 0;
-            fg_result r = post(sh, &rng, s, stopped_by_plan ? &plasma : NULL);
+            fg_result r = post(sh, s, key, stopped_by_plan ? &plasma : NULL);
             sh->posts++;
             sh->post_errors += r != FG_OK;
         }
         while (next_spark < SPARKS && SPARK_FIRST_S + SPARK_EVERY_S * next_spark <= now_s) {
             const scheduled spark = {SPARK_FIRST_S + SPARK_EVERY_S * next_spark, POST_SPARK, 1, 0};
-            fg_result r = post(sh, &rng, &spark, NULL);
+            fg_result r = post(sh, &spark, PLAN_LEN + next_spark, NULL);
             next_spark++;
             sh->posts++;
             sh->post_errors += r != FG_OK;
