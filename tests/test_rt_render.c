@@ -1,6 +1,7 @@
 /* The real-time proof: ten seconds of rendering with every feature of the
  * engine in use makes no allocation, lock, sleep or I/O call. The rt_guard
- * is armed around every fg_engine_render call and the counter read after it. *
+ * is armed around every fg_engine_render call and the counter read after it.
+ *
  * Three threads, as a host would have them:
  *   main      the audio thread: 48 kHz, 256-frame blocks, two ears;
  *   producer  the sim thread: posts on a schedule kept on the engine clock
