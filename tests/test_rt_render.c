@@ -28,6 +28,7 @@
 #include "fulgur/fulgur.h"
 #include "random_tree.h"
 #include "rt_guard.h"
+#include "voice_internal.h" /* FG_MAX_INSTANCES */
 
 #define FS 48000.0
 #define BLOCK 256
@@ -94,7 +95,7 @@ static void flag_main_channel(fg_node *nodes, size_t count)
 
 /* Posts s; key seeds its tree, so every run posts the same trees whatever
  * the threads' timing. */
-static fg_result post(shared *sh, const scheduled *s, uint64_t key, fg_voice_id *id)
+static fg_result post(fg_engine *e, const scheduled *s, uint64_t key, fg_voice_id *id)
 {
     fg_rng rng;
     fg_rng_seed(&rng, key);
@@ -129,7 +130,7 @@ static fg_result post(shared *sh, const scheduled *s, uint64_t key, fg_voice_id 
             d.emit_time_s = FG_EMIT_NOW;
     }
     fg_result res = fg_preset_sound(preset, &d.sound);
-    return res != FG_OK ? res : fg_engine_post(sh->engine, &d, id);
+    return res != FG_OK ? res : fg_engine_post(e, &d, id);
 }
 
 static void *producer_main(void *arg)
@@ -148,13 +149,13 @@ static void *producer_main(void *arg)
                 continue;
             }
             bool stopped_by_plan = s->kind == POST_PLASMA && s->duration_s == 0;
-            fg_result r = post(sh, s, key, stopped_by_plan ? &plasma : NULL);
+            fg_result r = post(sh->engine, s, key, stopped_by_plan ? &plasma : NULL);
             sh->posts++;
             sh->post_errors += r != FG_OK;
         }
         while (next_spark < SPARKS && SPARK_FIRST_S + SPARK_EVERY_S * next_spark <= now_s) {
             const scheduled spark = {SPARK_FIRST_S + SPARK_EVERY_S * next_spark, POST_SPARK, 1, 0};
-            fg_result r = post(sh, &spark, PLAN_LEN + next_spark, NULL);
+            fg_result r = post(sh->engine, &spark, PLAN_LEN + next_spark, NULL);
             next_spark++;
             sh->posts++;
             sh->post_errors += r != FG_OK;
@@ -182,6 +183,34 @@ static void *mover_main(void *arg)
         pause_briefly();
     }
     return NULL;
+}
+
+/* Renders one block with the guard armed and reads the counters after it,
+ * as a host's meter would; adds what the guard counted to *total. */
+static fg_result render_armed(fg_engine *e, float *const *planes, uint32_t frames,
+                              fg_engine_stats *meter, rt_guard_counts *total)
+{
+    rt_guard_arm();
+    fg_result r = fg_engine_render(e, planes, frames);
+    fg_engine_get_stats(e, meter);
+    rt_guard_counts c = rt_guard_disarm();
+    total->alloc += c.alloc;
+    total->lock += c.lock;
+    total->io += c.io;
+    total->sleep += c.sleep;
+    if (!total->first)
+        total->first = c.first;
+    return r;
+}
+
+static void assert_guard_clean(const rt_guard_counts *total)
+{
+    print_message("render calls: alloc %lu lock %lu io %lu sleep %lu (first: %s)\n", total->alloc,
+                  total->lock, total->io, total->sleep, total->first ? total->first : "none");
+    assert_int_equal(total->alloc, 0);
+    assert_int_equal(total->lock, 0);
+    assert_int_equal(total->io, 0);
+    assert_int_equal(total->sleep, 0);
 }
 
 static void test_ten_seconds_armed(void **state)
@@ -213,19 +242,9 @@ static void test_ten_seconds_armed(void **state)
             sched_yield();
         }
         float *planes[2] = {left + (size_t)b * BLOCK, right + (size_t)b * BLOCK};
-        fg_engine_stats meter; /* a host's audio thread may read the counters */
-        rt_guard_arm();
-        fg_result r = fg_engine_render(e, planes, BLOCK);
-        fg_engine_get_stats(e, &meter);
-        rt_guard_counts c = rt_guard_disarm();
-        assert_int_equal(r, FG_OK);
+        fg_engine_stats meter;
+        assert_int_equal(render_armed(e, planes, BLOCK, &meter, &total), FG_OK);
         assert_int_equal(meter.blocks, (uint64_t)b + 1);
-        total.alloc += c.alloc;
-        total.lock += c.lock;
-        total.io += c.io;
-        total.sleep += c.sleep;
-        if (!total.first)
-            total.first = c.first;
     }
     atomic_store_explicit(&sh.quit, 1, memory_order_release);
     assert_int_equal(pthread_join(producer, NULL), 0);
@@ -235,8 +254,6 @@ static void test_ten_seconds_armed(void **state)
 
     fg_engine_stats st;
     fg_engine_get_stats(e, &st);
-    print_message("render calls: alloc %lu lock %lu io %lu sleep %lu (first: %s)\n", total.alloc,
-                  total.lock, total.io, total.sleep, total.first ? total.first : "none");
     print_message("%llu posts, %llu adopted, %llu finished, %llu late events, %llu poses, "
                   "%llu waits for the producer\n",
                   (unsigned long long)sh.posts, (unsigned long long)st.adopted,
@@ -244,10 +261,7 @@ static void test_ten_seconds_armed(void **state)
                   (unsigned long long)sh.poses, (unsigned long long)waits);
 
     /* the proof */
-    assert_int_equal(total.alloc, 0);
-    assert_int_equal(total.lock, 0);
-    assert_int_equal(total.io, 0);
-    assert_int_equal(total.sleep, 0);
+    assert_guard_clean(&total);
 
     /* everything that was planned happened */
     assert_int_equal(sh.posts, PLAN_LEN - 1 + SPARKS);
@@ -280,10 +294,93 @@ static void test_ten_seconds_armed(void **state)
     fg_engine_destroy(e);
 }
 
+/* The render paths a smooth run never takes, armed: zero frames, too many
+ * frames, a burst of posts beyond the per-block adoption limit, a voice that
+ * is late, and a continuous voice whose repeats overlap more than
+ * FG_MAX_INSTANCES times and which is then stopped. The sim-thread calls
+ * are made from this thread between blocks. */
+#define BURST 20
+#define CHAIN 80
+#define REPEAT_S 0.001
+
+static void test_rare_paths_armed(void **state)
+{
+    (void)state;
+    fg_engine_config cfg;
+    fg_engine_config_default(&cfg);
+    cfg.max_block_frames = BLOCK;
+    fg_engine *e;
+    assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
+    float left[BLOCK + 1], right[BLOCK + 1], *planes[2] = {left, right};
+    rt_guard_counts total = {0};
+    fg_engine_stats m;
+
+    assert_int_equal(render_armed(e, planes, 0, &m, &total), FG_OK);
+    assert_int_equal(render_armed(e, planes, BLOCK + 1, &m, &total), FG_ERR_BLOCK_SIZE);
+    assert_int_equal(m.blocks, 0);
+    assert_int_equal(fg_engine_frames(e), 0);
+
+    /* a spark a metre ahead (the listener is at the origin, facing +y) */
+    const fg_node spark[] = {{0, 1, 0.01, -1, 0}, {0.004, 1, 0, 0, 0}, {0, 1, -0.01, 1, 0}};
+    fg_discharge d = {.nodes = spark, .node_count = 3, .emit_time_s = FG_EMIT_NOW, .strokes = 1};
+    assert_int_equal(fg_preset_sound(FG_PRESET_SPARK_BALLS, &d.sound), FG_OK);
+    for (int k = 0; k < BURST; k++)
+        assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
+    for (uint32_t b = 1; b <= 3; b++) {
+        assert_int_equal(render_armed(e, planes, BLOCK, &m, &total), FG_OK);
+        uint32_t expect = b * cfg.max_adopt_per_block;
+        assert_int_equal(m.adopted, expect < BURST ? expect : BURST);
+    }
+
+    /* late: emitted at 0 s, posted at about 0.5 s */
+    while (fg_engine_time_s(e) < 0.5) {
+        assert_int_equal(render_armed(e, planes, BLOCK, &m, &total), FG_OK);
+        fg_engine_collect(e);
+    }
+    d.emit_time_s = 0;
+    assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
+    assert_int_equal(render_armed(e, planes, BLOCK, &m, &total), FG_OK);
+    assert_int_equal(m.late_events, 2);
+    assert_true(m.late_samples > 0);
+
+    /* repeats: a chain running straight away from the listener, 1 m to
+     * 40 m, sounds for ~0.11 s per emission; one emission per millisecond */
+    fg_node chain[CHAIN];
+    for (int k = 0; k < CHAIN; k++)
+        chain[k] = (fg_node){0, 1 + 0.5 * k, 0, k - 1, 0};
+    double spread_s = (chain[CHAIN - 1].y - chain[0].y) / cfg.speed_of_sound_m_s;
+    assert_true(spread_s / REPEAT_S > 1.5 * FG_MAX_INSTANCES);
+    fg_discharge held = {.nodes = chain, .node_count = CHAIN, .emit_time_s = FG_EMIT_NOW,
+                         .continuous = 1, .repeat_min_s = REPEAT_S, .repeat_max_s = REPEAT_S};
+    assert_int_equal(fg_preset_sound(FG_PRESET_PLASMA_BALL, &held.sound), FG_OK);
+    fg_voice_id id;
+    assert_int_equal(fg_engine_post(e, &held, &id), FG_OK);
+    double stop_at_s = fg_engine_time_s(e) + 0.3;
+    while (fg_engine_time_s(e) < stop_at_s)
+        assert_int_equal(render_armed(e, planes, BLOCK, &m, &total), FG_OK);
+    assert_true(m.skipped_repeats > 0);
+    assert_int_equal(m.finished, m.adopted - 1);
+    assert_int_equal(fg_engine_stop(e, id), FG_OK);
+    /* the sounding emissions end within their spread */
+    for (int b = 0; b * BLOCK < 2 * spread_s * FS && m.finished < m.posted; b++)
+        assert_int_equal(render_armed(e, planes, BLOCK, &m, &total), FG_OK);
+    print_message("%llu posted, %llu adopted, %llu finished, %llu late events (%llu samples), "
+                  "%llu skipped repeats\n",
+                  (unsigned long long)m.posted, (unsigned long long)m.adopted,
+                  (unsigned long long)m.finished, (unsigned long long)m.late_events,
+                  (unsigned long long)m.late_samples, (unsigned long long)m.skipped_repeats);
+    assert_int_equal(m.posted, BURST + 2);
+    assert_int_equal(m.finished, m.posted);
+    assert_int_equal(fg_engine_collect(e) + m.collected, m.posted);
+    assert_guard_clean(&total);
+    fg_engine_destroy(e);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ten_seconds_armed),
+        cmocka_unit_test(test_rare_paths_armed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
