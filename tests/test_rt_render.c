@@ -39,6 +39,7 @@
 #define MAX_NODES 400
 #define ORBIT_M 2.0       /* the listener's circle, radius */
 #define ORBIT_RAD_S 0.5   /* and angular speed: 1 m/s */
+#define MOVES 20          /* the listener moves at least this often */
 
 typedef enum post_kind { POST_LIGHTNING, POST_SPARK, POST_PLASMA, POST_STOP_PLASMA } post_kind;
 
@@ -71,7 +72,7 @@ typedef struct shared {
     uint64_t posts, post_errors, collected;
     fg_result stop_result;
     /* mover's */
-    uint64_t poses;
+    atomic_uint_least64_t poses;            /* poses published so far */
     uint64_t pose_errors;
 } shared;
 
@@ -179,7 +180,7 @@ static void *mover_main(void *arg)
             .velocity = {-ORBIT_M * ORBIT_RAD_S * sin(a), ORBIT_M * ORBIT_RAD_S * cos(a), 0},
         };
         sh->pose_errors += fg_engine_set_listener(sh->engine, &pose) != FG_OK;
-        sh->poses++;
+        atomic_fetch_add_explicit(&sh->poses, 1, memory_order_release);
         pause_briefly();
     }
     return NULL;
@@ -241,6 +242,12 @@ static void test_ten_seconds_armed(void **state)
             waits++;
             sched_yield();
         }
+        /* however the threads are scheduled, the listener moves during the run */
+        if (b % (BLOCKS / MOVES) == 0) {
+            uint64_t seen = atomic_load_explicit(&sh.poses, memory_order_acquire);
+            while (atomic_load_explicit(&sh.poses, memory_order_acquire) == seen)
+                sched_yield();
+        }
         float *planes[2] = {left + (size_t)b * BLOCK, right + (size_t)b * BLOCK};
         fg_engine_stats meter;
         assert_int_equal(render_armed(e, planes, BLOCK, &meter, &total), FG_OK);
@@ -258,7 +265,7 @@ static void test_ten_seconds_armed(void **state)
                   "%llu waits for the producer\n",
                   (unsigned long long)sh.posts, (unsigned long long)st.adopted,
                   (unsigned long long)st.finished, (unsigned long long)st.late_events,
-                  (unsigned long long)sh.poses, (unsigned long long)waits);
+                  (unsigned long long)atomic_load(&sh.poses), (unsigned long long)waits);
 
     /* the proof */
     assert_guard_clean(&total);
@@ -268,7 +275,7 @@ static void test_ten_seconds_armed(void **state)
     assert_int_equal(sh.post_errors, 0);
     assert_int_equal(sh.stop_result, FG_OK);
     assert_int_equal(sh.pose_errors, 0);
-    assert_true(sh.poses > 1);
+    assert_true(atomic_load(&sh.poses) >= MOVES);
     assert_int_equal(st.blocks, BLOCKS);
     assert_int_equal(st.posted, sh.posts);
     assert_int_equal(st.adopted, sh.posts);
