@@ -12,6 +12,7 @@
 
 #include <cmocka.h>
 
+#include "engine_fixture.h"
 #include "fulgur/fulgur.h"
 #include "random_tree.h"
 
@@ -89,8 +90,7 @@ static void test_post_while_rendering(void **state)
     for (;;) {
         assert_int_equal(fg_engine_render(e, planes, BLOCK), FG_OK);
         blocks++;
-        for (int i = 0; i < BLOCK; i++)
-            energy += (double)left[i] * left[i] + (double)right[i] * right[i];
+        energy += fx_energy(left, 0, BLOCK) + fx_energy(right, 0, BLOCK);
         if (!atomic_load_explicit(&p.done, memory_order_acquire))
             continue;
         fg_engine_get_stats(e, &st);
