@@ -1,4 +1,5 @@
 #include <math.h>
+#include <stdbool.h>
 #include <string.h>
 
 #include "absorb_filter_internal.h"
@@ -6,8 +7,7 @@
 
 #define NP (4 * FG_IIR_MAX_SECTIONS) /* u1, u2 for numerator and denominator */
 #define U_MAX 12.0
-#define ITERATIONS 300
-#define STEP 1e-6
+#define ITERATIONS 600
 
 double fg_absorb_hi_hz(double fs_hz)
 {
@@ -33,27 +33,7 @@ double fg_absorb_error_db(const fg_iir *f, const fg_air *air, double distance_m,
                     fg_absorb_target_db(air, distance_m, f_hz));
 }
 
-/* The stability triangle of x^2 + c1 x + c2 scaled to the disc of radius
- * FG_ABSORB_MAX_RADIUS: any u gives roots inside it. */
-static void triangle(const double *u, double *c1, double *c2)
-{
-    const double rho = FG_ABSORB_MAX_RADIUS;
-    double t2 = tanh(u[1]);
-    *c2 = rho * rho * t2;
-    *c1 = rho * (1.0 + t2) * tanh(u[0]);
-}
 
-static void to_filter(const double *u, fg_iir *f)
-{
-    f->sections = FG_IIR_MAX_SECTIONS;
-    for (unsigned k = 0; k < FG_IIR_MAX_SECTIONS; k++) {
-        double n1, n2, d1, d2;
-        triangle(u + 4 * k, &n1, &n2);
-        triangle(u + 4 * k + 2, &d1, &d2);
-        double b0 = (1.0 + d1 + d2) / (1.0 + n1 + n2);
-        f->sec[k] = (fg_biquad){b0, b0 * n1, b0 * n2, d1, d2};
-    }
-}
 
 typedef struct problem {
     double w[FG_ABSORB_GRID];
@@ -61,17 +41,66 @@ typedef struct problem {
     double target[FG_ABSORB_GRID];
 } problem;
 
-static double residuals(const problem *pb, const double *u, double *r)
+#define POLYS (2 * FG_IIR_MAX_SECTIONS) /* numerator, denominator, ... */
+
+/* One polynomial 1 + c1 x^-1 + c2 x^-2 and its coefficients' partial
+ * derivatives with respect to its two parameters (dc2/du1 = 0). */
+typedef struct poly {
+    double c1, c2, dc1_du1, dc1_du2, dc2_du2;
+} poly;
+
+/* The stability triangle of x^2 + c1 x + c2 scaled to the disc of radius
+ * FG_ABSORB_MAX_RADIUS: any u gives roots inside it. */
+static poly triangle(const double *u)
 {
-    fg_iir f;
-    to_filter(u, &f);
+    const double rho = FG_ABSORB_MAX_RADIUS;
+    double t1 = tanh(u[0]), t2 = tanh(u[1]);
+    return (poly){rho * (1.0 + t2) * t1, rho * rho * t2, rho * (1.0 + t2) * (1.0 - t1 * t1),
+                  rho * t1 * (1.0 - t2 * t2), rho * rho * (1.0 - t2 * t2)};
+}
+
+static void to_filter(const double *u, fg_iir *f)
+{
+    f->sections = FG_IIR_MAX_SECTIONS;
+    for (unsigned k = 0; k < FG_IIR_MAX_SECTIONS; k++) {
+        poly n = triangle(u + 4 * k), d = triangle(u + 4 * k + 2);
+        double b0 = (1.0 + d.c1 + d.c2) / (1.0 + n.c1 + n.c2);
+        f->sec[k] = (fg_biquad){b0, b0 * n.c1, b0 * n.c2, d.c1, d.c2};
+    }
+}
+
+/* Residuals r (and, unless jac is NULL, their exact Jacobian) at u;
+ * returns the cost sum r^2. With b0 normalising DC, a section's response
+ * in dB is 10/ln10 [ln P_num - 2 ln N_num(1) - ln P_den + 2 ln N_den(1)],
+ * P = |1 + c1 e^{-jw} + c2 e^{-2jw}|^2, N(1) = 1 + c1 + c2. */
+static double evaluate(const problem *pb, const double *u, double *r, double jac[][NP])
+{
+    const double db = 10.0 / log(10.0);
+    poly p[POLYS];
+    for (int k = 0; k < POLYS; k++)
+        p[k] = triangle(u + 2 * k);
     double cost = 0.0;
     for (int i = 0; i < FG_ABSORB_GRID; i++) {
-        double m2 = 1.0;
-        for (unsigned k = 0; k < f.sections; k++)
-            m2 *= fg_biquad_mag2(&f.sec[k], &pb->e[i]);
-        r[i] = residual(10.0 * log10(m2), pb->target[i]);
+        const fg_phasor *e = &pb->e[i];
+        double got = 0.0, grad[NP];
+        for (int k = 0; k < POLYS; k++) {
+            double sign = k % 2 == 0 ? db : -db;
+            double re = 1.0 + p[k].c1 * e->c1 + p[k].c2 * e->c2;
+            double im = p[k].c1 * e->s1 + p[k].c2 * e->s2;
+            double mag2 = re * re + im * im, dc = 1.0 + p[k].c1 + p[k].c2;
+            got += sign * (log(mag2) - 2.0 * log(dc));
+            double g1 = sign * (2.0 * (re * e->c1 + im * e->s1) / mag2 - 2.0 / dc);
+            double g2 = sign * (2.0 * (re * e->c2 + im * e->s2) / mag2 - 2.0 / dc);
+            grad[2 * k] = g1 * p[k].dc1_du1;
+            grad[2 * k + 1] = g1 * p[k].dc1_du2 + g2 * p[k].dc2_du2;
+        }
+        r[i] = residual(got, pb->target[i]);
         cost += r[i] * r[i];
+        if (jac) {
+            bool active = pb->target[i] >= FG_ABSORB_FLOOR_DB || got > FG_ABSORB_FLOOR_DB;
+            for (int a = 0; a < NP; a++)
+                jac[i][a] = active ? grad[a] : 0.0;
+        }
     }
     return cost;
 }
@@ -107,29 +136,13 @@ static void solve(double a[NP][NP], double *b)
     }
 }
 
-static void jacobian(const problem *pb, double *u, double jac[FG_ABSORB_GRID][NP])
-{
-    double rp[FG_ABSORB_GRID], rm[FG_ABSORB_GRID];
-    for (int k = 0; k < NP; k++) {
-        double keep = u[k];
-        u[k] = keep + STEP;
-        residuals(pb, u, rp);
-        u[k] = keep - STEP;
-        residuals(pb, u, rm);
-        u[k] = keep;
-        for (int i = 0; i < FG_ABSORB_GRID; i++)
-            jac[i][k] = (rp[i] - rm[i]) / (2.0 * STEP);
-    }
-}
-
 /* One Levenberg-Marquardt run from u; returns the final cost. */
 static double levenberg_marquardt(const problem *pb, double *u)
 {
     static const double lambda_max = 1e12;
     double r[FG_ABSORB_GRID], jac[FG_ABSORB_GRID][NP];
-    double cost = residuals(pb, u, r), lambda = 1e-2;
+    double cost = evaluate(pb, u, r, jac), lambda = 1e-2;
     for (int it = 0; it < ITERATIONS && lambda < lambda_max; it++) {
-        jacobian(pb, u, jac);
         double jtj[NP][NP], g[NP];
         for (int a = 0; a < NP; a++) {
             g[a] = 0.0;
@@ -151,10 +164,10 @@ static double levenberg_marquardt(const problem *pb, double *u)
             solve(m, step);
             for (int a = 0; a < NP; a++)
                 trial[a] = fmax(-U_MAX, fmin(U_MAX, u[a] + step[a]));
-            double c = residuals(pb, trial, rt);
+            double c = evaluate(pb, trial, rt, NULL);
             if (c < cost) {
                 memcpy(u, trial, sizeof trial);
-                memcpy(r, rt, sizeof rt);
+                evaluate(pb, u, r, jac);
                 double gain = cost - c;
                 cost = c;
                 lambda = fmax(lambda / 3.0, 1e-9);
@@ -214,7 +227,7 @@ double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double 
     to_filter(u, f);
     fg_iir_reset(f);
     double r[FG_ABSORB_GRID], worst = 0.0;
-    residuals(&pb, u, r);
+    evaluate(&pb, u, r, NULL);
     for (int i = 0; i < FG_ABSORB_GRID; i++)
         worst = fmax(worst, fabs(r[i]));
     return worst;
