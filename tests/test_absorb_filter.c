@@ -74,12 +74,24 @@ static void test_far_is_dark(void **state)
     assert_true(fg_iir_db(&f, 2.0 * FG_PI * 50.0 / 48000.0) > -1.5);
 }
 
+/* No distance, no absorption: a flat filter. */
+static void test_zero_distance(void **state)
+{
+    (void)state;
+    fg_air air = FG_AIR_DEFAULT;
+    fg_iir f;
+    assert_true(fg_absorb_design(&f, &air, 0.0, 48000.0) < 0.01);
+    for (double hz = 20.0; hz < 24000.0; hz *= 1.1)
+        assert_true(fabs(fg_iir_db(&f, 2.0 * FG_PI * hz / 48000.0)) < 0.01);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_default_air),
         cmocka_unit_test(test_other_air),
         cmocka_unit_test(test_far_is_dark),
+        cmocka_unit_test(test_zero_distance),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

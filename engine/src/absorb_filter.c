@@ -6,7 +6,7 @@
 #include "fg_math_internal.h"
 
 #define NP (4 * FG_IIR_MAX_SECTIONS) /* u1, u2 for numerator and denominator */
-#define U_MAX 12.0
+#define U_MAX 12.0 /* parameters stay where tanh still has a slope */
 #define ITERATIONS 600
 
 double fg_absorb_hi_hz(double fs_hz)
@@ -33,8 +33,6 @@ double fg_absorb_error_db(const fg_iir *f, const fg_air *air, double distance_m,
                     fg_absorb_target_db(air, distance_m, f_hz));
 }
 
-
-
 typedef struct problem {
     double w[FG_ABSORB_GRID];
     fg_phasor e[FG_ABSORB_GRID];
@@ -58,6 +56,7 @@ static poly triangle(const double *u)
     return (poly){rho * (1.0 + t2) * t1, rho * rho * t2, rho * (1.0 + t2) * (1.0 - t1 * t1),
                   rho * t1 * (1.0 - t2 * t2), rho * rho * (1.0 - t2 * t2)};
 }
+
 
 static void to_filter(const double *u, fg_iir *f)
 {
@@ -185,6 +184,7 @@ static double levenberg_marquardt(const problem *pb, double *u)
  * frequency of the target and at `spread` and spread^2 times it. */
 static void initial_guess(const problem *pb, double spread, double *u)
 {
+    const double rho = FG_ABSORB_MAX_RADIUS;
     double w3 = pb->w[FG_ABSORB_GRID - 1];
     for (int i = 0; i < FG_ABSORB_GRID; i++) {
         if (pb->target[i] < -3.0) {
@@ -196,7 +196,6 @@ static void initial_guess(const problem *pb, double spread, double *u)
         double wk = fmin(w3 * pow(spread, k), 2.0 * FG_PI * 0.45);
         double p = exp(-wk), c2 = p * p, c1 = -2.0 * p;
         u[4 * k] = u[4 * k + 1] = 0.0;
-        const double rho = FG_ABSORB_MAX_RADIUS;
         u[4 * k + 2] = atanh(c1 / (rho * (1.0 + c2 / (rho * rho))));
         u[4 * k + 3] = atanh(c2 / (rho * rho));
     }

@@ -44,7 +44,7 @@ static double poly_mag2(double c0, double c1, double c2, const fg_phasor *e)
     return re * re + im * im;
 }
 
-double fg_biquad_mag2(const fg_biquad *s, const fg_phasor *e)
+static double biquad_mag2(const fg_biquad *s, const fg_phasor *e)
 {
     return poly_mag2(s->b0, s->b1, s->b2, e) / poly_mag2(1.0, s->a1, s->a2, e);
 }
@@ -54,7 +54,7 @@ double fg_iir_db(const fg_iir *f, double w)
     fg_phasor e = fg_phasor_at(w);
     double m2 = 1.0;
     for (unsigned k = 0; k < f->sections; k++)
-        m2 *= fg_biquad_mag2(&f->sec[k], &e);
+        m2 *= biquad_mag2(&f->sec[k], &e);
     return 10.0 * log10(m2);
 }
 

@@ -37,9 +37,6 @@ typedef struct fg_phasor {
 
 fg_phasor fg_phasor_at(double w);
 
-/* |H(e^{jw})|^2 of one section. */
-double fg_biquad_mag2(const fg_biquad *s, const fg_phasor *e);
-
 /* |H(e^{jw})| of the cascade in decibels, w = 2 pi f / fs rad/sample. */
 double fg_iir_db(const fg_iir *f, double w);
 
