@@ -6,13 +6,13 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include <cmocka.h>
 
 #include "abe_lowpass_internal.h"
 #include "fg_math_internal.h"
+#include "rng_internal.h"
 
 #define N 48000
 
@@ -101,9 +101,10 @@ static void test_dc_and_impulse(void **state)
 static void test_block_split_exact(void **state)
 {
     (void)state;
-    srand(7);
+    fg_rng rng;
+    fg_rng_seed(&rng, 7);
     for (size_t i = 0; i < N; i++)
-        buf[i] = other[i] = (float)rand() / RAND_MAX - 0.5f;
+        buf[i] = other[i] = (float)fg_rng_range(&rng, -0.5, 0.5);
     assert_int_equal(fg_abe_fir_init(&fir, 44100.0), FG_OK);
     fg_abe_fir_process(&fir, buf, N);
     assert_int_equal(fg_abe_fir_init(&fir, 44100.0), FG_OK);
