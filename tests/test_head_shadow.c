@@ -24,7 +24,7 @@ static void test_gain_law(void **state)
         {{0, 5, 0}, 0.0},       /* facing the ear */
         {{3, 0, 0}, -2.5},      /* ahead: at the side of the ear */
         {{0, -1, 0}, -10.0},    /* opposite */
-        {{1, 1, 0}, -10.0 * pow((1 - sqrt(0.5)) / 2, 2)},
+        {{1, 1, 0}, -0.21446609406726214}, /* -10 ((1 - cos 45 deg) / 2)^2 */
         {{0, 0, 0}, 0.0},       /* no direction */
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
