@@ -17,9 +17,10 @@
  * at least 46 dB down everywhere above 600 Hz, images included (44.1, 48
  * and 96 kHz).
  *
- * Cost per sample: 52 multiply-adds and four adds; the moving-average sums
- * are recomputed exactly once per M samples (at fixed sample positions,
- * so block splitting never changes the output). */
+ * Cost per sample: 52 multiply-adds, plus four adds and two divisions for
+ * the moving averages, whose running sums are re-added exactly once per M
+ * samples (at fixed sample positions, so block splitting never changes the
+ * output); about 60 ns per sample here. State: about 35 KB. */
 #ifndef FULGUR_ABE_LOWPASS_INTERNAL_H
 #define FULGUR_ABE_LOWPASS_INTERNAL_H
 
