@@ -76,23 +76,27 @@ static double evaluate(const problem *pb, const double *u, double *r, double jac
 {
     const double db = 10.0 / log(10.0);
     poly p[POLYS];
-    for (int k = 0; k < POLYS; k++)
+    double log_dc = 0.0; /* sum of -+2 ln N(1): the same at every frequency */
+    for (int k = 0; k < POLYS; k++) {
         p[k] = triangle(u + 2 * k);
+        log_dc += (k % 2 == 0 ? -2.0 : 2.0) * log(1.0 + p[k].c1 + p[k].c2);
+    }
     double cost = 0.0;
     for (int i = 0; i < FG_ABSORB_GRID; i++) {
         const fg_phasor *e = &pb->e[i];
-        double got = 0.0, grad[NP];
+        double ratio = 1.0, grad[NP];
         for (int k = 0; k < POLYS; k++) {
             double sign = k % 2 == 0 ? db : -db;
             double re = 1.0 + p[k].c1 * e->c1 + p[k].c2 * e->c2;
             double im = p[k].c1 * e->s1 + p[k].c2 * e->s2;
             double mag2 = re * re + im * im, dc = 1.0 + p[k].c1 + p[k].c2;
-            got += sign * (log(mag2) - 2.0 * log(dc));
+            ratio = k % 2 == 0 ? ratio * mag2 : ratio / mag2;
             double g1 = sign * (2.0 * (re * e->c1 + im * e->s1) / mag2 - 2.0 / dc);
             double g2 = sign * (2.0 * (re * e->c2 + im * e->s2) / mag2 - 2.0 / dc);
             grad[2 * k] = g1 * p[k].dc1_du1;
             grad[2 * k + 1] = g1 * p[k].dc1_du2 + g2 * p[k].dc2_du2;
         }
+        double got = db * (log(ratio) + log_dc);
         r[i] = residual(got, pb->target[i]);
         cost += r[i] * r[i];
         if (jac) {

@@ -43,7 +43,7 @@ double fg_absorb_error_db(const fg_iir *f, const fg_air *air, double distance_m,
 
 /* Designs f (state cleared) for distance_m >= 0 at sample rate fs_hz > 0.
  * Returns the largest |error| over the fitting grid, dB. [main-thread] or
- * [sim-thread]: about 50 ms, no allocation. */
+ * [sim-thread]: about 30 ms, no allocation. */
 double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double fs_hz);
 
 #endif
