@@ -151,11 +151,11 @@ static double levenberg_marquardt(const problem *pb, double *u)
             g[a] = 0.0;
             for (int i = 0; i < FG_ABSORB_GRID; i++)
                 g[a] -= jac[i][a] * r[i];
-            for (int b = 0; b < NP; b++) {
+            for (int b = 0; b <= a; b++) {
                 double s = 0.0;
                 for (int i = 0; i < FG_ABSORB_GRID; i++)
                     s += jac[i][a] * jac[i][b];
-                jtj[a][b] = s;
+                jtj[a][b] = jtj[b][a] = s;
             }
         }
         while (lambda < lambda_max) {
