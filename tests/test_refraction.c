@@ -8,12 +8,13 @@
 
 #include <cmocka.h>
 
+#include "fulgur/propagation.h"
 #include "refraction_internal.h"
 
 static void test_shadow_height(void **state)
 {
     (void)state;
-    double h = fg_shadow_height_m(3000.0, FG_REFRACTION_STORM_RADIUS_M);
+    double h = fg_shadow_height_m(3000.0, FG_REFRACTION_STORM_M);
     assert_true(fabs(h - 9.0e6 / 110000.0) < 1e-9);
     assert_true(h > 81.0 && h < 83.0);
     assert_true(fg_shadow_height_m(3000.0, 0.0) == 0.0);
@@ -25,7 +26,7 @@ static void test_shadow_height(void **state)
 static void test_shadow_gain(void **state)
 {
     (void)state;
-    const double d = 3000.0, r = FG_REFRACTION_STORM_RADIUS_M;
+    const double d = 3000.0, r = FG_REFRACTION_STORM_M;
     const double top = fg_shadow_height_m(d, r);
     static const struct {
         double fraction, gain;

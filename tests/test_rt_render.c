@@ -2,6 +2,7 @@
  * engine in use makes no allocation, lock, sleep or I/O call. The rt_guard
  * is armed around every fg_engine_render call and the counter read after it.
  *
+ * Every propagation effect and both voice models are in use.
  * Three threads, as a host would have them:
  *   main      the audio thread: 48 kHz, 256-frame blocks, two ears;
  *   producer  the sim thread: posts on a schedule kept on the engine clock
@@ -131,6 +132,19 @@ static fg_result post(fg_engine *e, const scheduled *s, uint64_t key, fg_voice_i
         if (fg_rng_uniform(&rng) < 0.5)
             d.emit_time_s = FG_EMIT_NOW;
     }
+    /* every propagation effect, on every other post; one spark in Abe's
+     * model (its waves are long: one keeps the run short) */
+    if (key % 2 == 0)
+        d.propagation = (fg_propagation){
+            .refraction_radius_m = FG_REFRACTION_STORM_M,
+            .turbulence_s = 0.002,
+            .absorption = key % 4 == 0 ? FG_ABSORPTION_ISO9613 : FG_ABSORPTION_ABE_FIR,
+            .abe_fir_distance_m = 1.0,
+            .ground_reflection = 0.8,
+            .head_shadow = 1,
+        };
+    if (key == PLAN_LEN + 1)
+        d.model = FG_MODEL_ABE;
     fg_result res = fg_preset_sound(preset, &d.sound);
     return res != FG_OK ? res : fg_engine_post(e, &d, id);
 }

@@ -28,6 +28,9 @@ void fg_engine_config_default(fg_engine_config *c)
         .ear_spacing_m = 0.18,
         .max_lookahead_s = 0.25,
         .max_adopt_per_block = 8,
+        .air_temperature_k = 293.15,
+        .air_humidity_pct = 70.0,
+        .air_pressure_kpa = 101.325,
     };
 }
 
@@ -37,7 +40,9 @@ static fg_result resolve_config(const fg_engine_config *in, fg_engine_config *ou
     if (!in)
         return FG_OK;
     if (!isfinite(in->sample_rate_hz) || !isfinite(in->speed_of_sound_m_s) ||
-        !isfinite(in->ear_spacing_m) || !isfinite(in->max_lookahead_s))
+        !isfinite(in->ear_spacing_m) || !isfinite(in->max_lookahead_s) ||
+        !isfinite(in->air_temperature_k) || !isfinite(in->air_humidity_pct) ||
+        !isfinite(in->air_pressure_kpa))
         return FG_ERR_NOT_FINITE;
     if (in->sample_rate_hz != 0 && (in->sample_rate_hz < 8000 || in->sample_rate_hz > 384000))
         return FG_ERR_SAMPLE_RATE;
@@ -45,7 +50,10 @@ static fg_result resolve_config(const fg_engine_config *in, fg_engine_config *ou
         in->max_voices > MAX_VOICES_LIMIT || in->segment_capacity > SEGMENT_LIMIT ||
         in->speed_of_sound_m_s < 0 || in->ear_spacing_m < 0 || in->ear_spacing_m > SETTING_LIMIT ||
         in->max_lookahead_s < 0 || in->max_lookahead_s > SETTING_LIMIT ||
-        in->max_adopt_per_block > MAX_VOICES_LIMIT)
+        in->max_adopt_per_block > MAX_VOICES_LIMIT ||
+        (in->air_temperature_k != 0 && (in->air_temperature_k < 200 || in->air_temperature_k > 350)) ||
+        in->air_humidity_pct < 0 || in->air_humidity_pct > 100 ||
+        (in->air_pressure_kpa != 0 && (in->air_pressure_kpa < 10 || in->air_pressure_kpa > 200)))
         return FG_ERR_ARGUMENT;
 #define TAKE(field) \
     if (in->field != 0) \
@@ -59,6 +67,9 @@ static fg_result resolve_config(const fg_engine_config *in, fg_engine_config *ou
     TAKE(ear_spacing_m)
     TAKE(max_lookahead_s)
     TAKE(max_adopt_per_block)
+    TAKE(air_temperature_k)
+    TAKE(air_humidity_pct)
+    TAKE(air_pressure_kpa)
 #undef TAKE
     return FG_OK;
 }
@@ -88,17 +99,21 @@ fg_result fg_engine_create(const fg_engine_config *config, fg_engine **out)
     e->scratch.main = calloc(nodes, 1);
     e->scratch.order = calloc(nodes, sizeof *e->scratch.order);
     e->scratch.order_tmp = calloc(nodes, sizeof *e->scratch.order_tmp);
-    e->d3 = calloc((size_t)cfg.channels * cfg.max_block_frames, sizeof *e->d3);
     bool ok = e->voices && e->free_slots && e->live && e->active && e->events &&
               e->main_index && e->scratch.path_m && e->scratch.junction && e->scratch.main &&
-              e->scratch.order && e->scratch.order_tmp && e->d3;
+              e->scratch.order && e->scratch.order_tmp;
     ok = ok && fg_arena_init(&e->arena, cfg.segment_capacity, cfg.max_voices);
     ok = ok && fg_ring_init(&e->inbox, cfg.max_voices);
     ok = ok && fg_ring_init(&e->garbage, cfg.max_voices);
-    if (!ok) {
+    fg_air air = {cfg.air_temperature_k - 273.15, cfg.air_humidity_pct, cfg.air_pressure_kpa};
+    r = ok ? fg_bus_set_init(&e->buses, cfg.channels, cfg.max_block_frames, cfg.sample_rate_hz,
+                             cfg.speed_of_sound_m_s, &air)
+           : FG_ERR_NO_MEMORY;
+    if (r != FG_OK) {
         fg_engine_destroy(e);
-        return FG_ERR_NO_MEMORY;
+        return r;
     }
+    e->abe = fg_abe_params_default();
     for (uint32_t i = 0; i < cfg.max_voices; i++) {
         e->voices[i].slot = i;
         atomic_init(&e->voices[i].stop, false);
@@ -120,7 +135,7 @@ void fg_engine_destroy(fg_engine *e)
     fg_ring_deinit(&e->inbox);
     fg_ring_deinit(&e->garbage);
     fg_arena_deinit(&e->arena);
-    free(e->d3);
+    fg_bus_set_deinit(&e->buses);
     free(e->scratch.order_tmp);
     free(e->scratch.order);
     free(e->scratch.main);
@@ -159,16 +174,20 @@ fg_result fg_engine_post(fg_engine *e, const fg_discharge *d, fg_voice_id *id)
     r = fg_discharge_check(d);
     if (r != FG_OK)
         return r;
-    size_t segments = d->node_count - 1;
+    size_t events = fg_discharge_events(d);
+    if (events > e->cfg.segment_capacity)
+        return FG_ERR_CAPACITY;
     if (fg_ring_space(&e->inbox) == 0) {
         count(&e->counters.dropped_posts);
         return FG_ERR_QUEUE_FULL;
     }
     size_t extent;
-    if (e->free_count == 0 || !fg_arena_alloc(&e->arena, segments, &extent)) {
+    if (e->free_count == 0 || !fg_arena_alloc(&e->arena, events, &extent)) {
         count(&e->counters.dropped_posts);
         return FG_ERR_POOL_FULL;
     }
+    if (d->propagation.absorption == FG_ABSORPTION_ISO9613)
+        fg_bus_set_design_bands(&e->buses);
     fg_voice *v = &e->voices[e->free_slots[--e->free_count]];
     v->extent = extent;
     v->events = &e->events[extent];
@@ -248,16 +267,14 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
     fg_listener_cell_try_read(&e->listener, &e->pose, &e->pose_serial);
     fg_ears ears;
     fg_listener_ears(&e->pose, e->cfg.channels, e->cfg.ear_spacing_m, &ears);
-    wm_block blocks[2];
-    for (uint32_t ch = 0; ch < e->cfg.channels; ch++)
-        wm_block_begin(&blocks[ch], e->d3 + (size_t)ch * e->cfg.max_block_frames, nframes);
+    fg_bus_set_begin(&e->buses, nframes);
     fg_block_context ctx = {
         .start_frame = (double)start,
         .frames = nframes,
         .ears = &ears,
         .position = e->pose.position,
         .serial = e->pose_serial,
-        .blocks = blocks,
+        .buses = &e->buses,
     };
     for (uint32_t i = 0; i < e->active_count;) {
         fg_voice *v = e->active[i];
@@ -270,8 +287,7 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
             i++;
         }
     }
-    for (uint32_t ch = 0; ch < e->cfg.channels; ch++)
-        wm_block_end(&blocks[ch], out[ch], 1.0f);
+    fg_bus_set_end(&e->buses, out, nframes);
 
     atomic_store_explicit(&e->frames, start + nframes, memory_order_release);
     count(&e->counters.blocks);

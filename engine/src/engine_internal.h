@@ -5,7 +5,9 @@
 #include <stdatomic.h>
 #include <stdint.h>
 
+#include "abe_voice_internal.h"
 #include "arena_internal.h"
+#include "bus_internal.h"
 #include "fulgur/engine.h"
 #include "listener_internal.h"
 #include "ring_internal.h"
@@ -45,10 +47,14 @@ struct fg_engine {
     fg_ring garbage;          /* audio -> sim: fg_voice * */
     fg_listener_cell listener;
 
+    /* filter buses: set up at create, band filters designed by the sim
+     * thread before the first voice that needs them */
+    fg_bus_set buses;
+    fg_abe_params abe;        /* FG_MODEL_ABE's wave parameters */
+
     /* audio thread */
     fg_voice **active;
     uint32_t active_count;
-    double *d3;               /* channels * max_block_frames */
     fg_listener pose;         /* last pose read */
     unsigned pose_serial;
 
@@ -56,9 +62,15 @@ struct fg_engine {
     fg_counters counters;
 };
 
+/* Abe's model: source points per discharge at most, evenly along the tree. */
+#define FG_ABE_MAX_SOURCES 512
+
 /* Fills voice v (slot and storage already assigned) from a checked
  * discharge, reading the current listener pose. [sim-thread] */
 void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d);
+
+/* How many events a checked discharge becomes. */
+size_t fg_discharge_events(const fg_discharge *d);
 
 /* Validates a discharge's parameters other than the tree. */
 fg_result fg_discharge_check(const fg_discharge *d);
@@ -71,14 +83,17 @@ typedef struct fg_block_context {
     const fg_ears *ears;
     const double *position;   /* listener centre */
     unsigned serial;
-    wm_block *blocks;         /* one per channel */
+    fg_bus_set *buses;
 } fg_block_context;
 
 void fg_voice_adopt(fg_engine *e, fg_voice *v, double start_frame);
 bool fg_voice_render(fg_engine *e, fg_voice *v, const fg_block_context *ctx);
 
-/* The shape of event ev for ear position ear, into ev's cache slot k. */
-void fg_event_geometry(const fg_engine *e, const fg_sound_params *p, fg_event *ev,
-                       const double ear[3], int k);
+/* Event ev of voice v as heard by ear k of ears, into ev's slot k. */
+void fg_event_geometry(const fg_engine *e, const fg_voice *v, fg_event *ev, const fg_ears *ears,
+                       int k);
+
+/* When ear k's slot of ev starts sounding, seconds after the emission. */
+double fg_event_start_s(const fg_engine *e, const fg_voice *v, const fg_event *ev, int k);
 
 #endif

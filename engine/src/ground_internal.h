@@ -10,8 +10,6 @@
 #ifndef FULGUR_GROUND_INTERNAL_H
 #define FULGUR_GROUND_INTERNAL_H
 
-#define FG_GROUND_DEFAULT_REFLECTION 0.9
-
 /* out = p mirrored in z = 0 (out may alias p). */
 void fg_ground_mirror(const double p[3], double out[3]);
 

@@ -105,15 +105,17 @@ void fg_listener_cell_read(const fg_listener_cell *cell, fg_listener *pose, unsi
 void fg_listener_ears(const fg_listener *p, unsigned channels, double spacing_m, fg_ears *out)
 {
     out->count = channels;
+    double r[3];
+    cross3(p->forward, p->up, r);
+    double norm = sqrt(dot3(r, r));
+    for (int k = 0; k < 3; k++)
+        out->right[k] = r[k] / norm;
     if (channels == 1) {
         memcpy(out->pos[0], p->position, sizeof out->pos[0]);
         return;
     }
-    double r[3];
-    cross3(p->forward, p->up, r);
-    double scale = 0.5 * spacing_m / sqrt(dot3(r, r));
     for (int k = 0; k < 3; k++) {
-        out->pos[0][k] = p->position[k] - scale * r[k];
-        out->pos[1][k] = p->position[k] + scale * r[k];
+        out->pos[0][k] = p->position[k] - 0.5 * spacing_m * out->right[k];
+        out->pos[1][k] = p->position[k] + 0.5 * spacing_m * out->right[k];
     }
 }

@@ -26,6 +26,7 @@ typedef struct fg_listener_cell {
 /* Where the ears are: channel 0 is the left ear, 1 the right. */
 typedef struct fg_ears {
     double pos[2][3];
+    double right[3];  /* unit vector from the left ear to the right */
     unsigned count;
 } fg_ears;
 

@@ -6,6 +6,7 @@
 
 #include "engine_internal.h"
 #include "strokes_internal.h"
+#include "turbulence_internal.h"
 
 #define REPEAT_MIN_DEFAULT_S 0.010
 #define REPEAT_MAX_DEFAULT_S 0.050
@@ -14,8 +15,12 @@
 fg_result fg_discharge_check(const fg_discharge *d)
 {
     fg_result r = fg_sound_params_check(&d->sound);
+    if (r == FG_OK)
+        r = fg_propagation_check(&d->propagation);
     if (r != FG_OK)
         return r;
+    if ((unsigned)d->model > FG_MODEL_ABE)
+        return FG_ERR_ARGUMENT;
     if (!isfinite(d->emit_time_s) || !isfinite(d->repeat_min_s) || !isfinite(d->repeat_max_s) ||
         !isfinite(d->duration_s))
         return FG_ERR_NOT_FINITE;
@@ -92,6 +97,53 @@ static void sort_by_start(fg_event *events, uint32_t n, fg_prep_scratch *s)
     }
 }
 
+size_t fg_discharge_events(const fg_discharge *d)
+{
+    size_t segments = d->node_count - 1;
+    size_t stride = (segments + FG_ABE_MAX_SOURCES - 1) / FG_ABE_MAX_SOURCES;
+    size_t events = d->model == FG_MODEL_ABE ? (segments + stride - 1) / stride : segments;
+    return d->propagation.ground_reflection > 0 ? 2 * events : events;
+}
+
+/* Fills ev from segment i (node i and its parent). */
+static void segment_event(const fg_discharge *d, const fg_prep_scratch *s, size_t strike,
+                          size_t i, fg_rng *rng, fg_event *ev)
+{
+    const fg_node *nodes = d->nodes;
+    const fg_sound_params *p = &d->sound;
+    const fg_node *a = &nodes[i], *b = &nodes[nodes[i].parent];
+    double len = distance(a, b);
+    ev->mid[0] = 0.5 * (a->x + b->x);
+    ev->mid[1] = 0.5 * (a->y + b->y);
+    ev->mid[2] = 0.5 * (a->z + b->z);
+    ev->dir[0] = (a->x - b->x) / len;
+    ev->dir[1] = (a->y - b->y) / len;
+    ev->dir[2] = (a->z - b->z) / len;
+    ev->half_len_m = 0.5 * len;
+    ev->t0_s = p->t0_s * (1.0 + p->t0_jitter * (2.0 * fg_rng_uniform(rng) - 1.0));
+    /* the return stroke climbs from the strike node and runs out along the
+     * branches: its path to node k is strike -> junction -> k */
+    double to_strike[2];
+    for (int j = 0; j < 2; j++) {
+        size_t k = j == 0 ? i : (size_t)nodes[i].parent;
+        to_strike[j] = s->path_m[strike] + s->path_m[k] - 2.0 * s->path_m[s->junction[k]];
+    }
+    ev->emit_s = 0.5 * (to_strike[0] + to_strike[1]) / p->return_stroke_speed_m_s;
+    ev->gain = 1.0;
+    ev->segment = (uint32_t)i;
+    ev->main = s->main[i];
+}
+
+/* The same segment seen in the ground: mirrored in z = 0, weaker by the
+ * reflection coefficient, emitting at the same moment. */
+static void image_event(const fg_event *src, double reflection, fg_event *ev)
+{
+    *ev = *src;
+    ev->mid[2] = -src->mid[2];
+    ev->dir[2] = -src->dir[2];
+    ev->gain = reflection;
+}
+
 void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
 {
     const fg_node *nodes = d->nodes;
@@ -111,42 +163,39 @@ void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
     fg_ears ears;
     fg_listener_ears(&pose, e->cfg.channels, e->cfg.ear_spacing_m, &ears);
     memcpy(v->post_position, pose.position, sizeof v->post_position);
-
     v->sound = d->sound;
-    const fg_sound_params *p = &v->sound;
-    double c = e->cfg.speed_of_sound_m_s;
-    for (size_t i = 1; i < n; i++) {
-        const fg_node *a = &nodes[i], *b = &nodes[nodes[i].parent];
-        fg_event *ev = &v->events[i - 1];
-        double len = distance(a, b);
-        ev->mid[0] = 0.5 * (a->x + b->x);
-        ev->mid[1] = 0.5 * (a->y + b->y);
-        ev->mid[2] = 0.5 * (a->z + b->z);
-        ev->dir[0] = (a->x - b->x) / len;
-        ev->dir[1] = (a->y - b->y) / len;
-        ev->dir[2] = (a->z - b->z) / len;
-        ev->half_len_m = 0.5 * len;
-        ev->t0_s = p->t0_s * (1.0 + p->t0_jitter * (2.0 * fg_rng_uniform(&rng) - 1.0));
-        /* the return stroke climbs from the strike node and runs out along
-         * the branches: its path to node k is strike -> junction -> k */
-        double to_strike[2];
-        for (int j = 0; j < 2; j++) {
-            size_t k = j == 0 ? i : (size_t)nodes[i].parent;
-            to_strike[j] = s->path_m[strike] + s->path_m[k] - 2.0 * s->path_m[s->junction[k]];
-        }
-        ev->emit_s = 0.5 * (to_strike[0] + to_strike[1]) / p->return_stroke_speed_m_s;
-        ev->segment = (uint32_t)i;
-        ev->main = s->main[i];
+    v->propagation = d->propagation;
+    v->model = d->model;
+
+    const fg_propagation *pr = &d->propagation;
+    fg_turbulence turbulence = {
+        .seed = fg_rng_next(&rng),
+        .amplitude_s = pr->turbulence_s,
+        .correlation_m = pr->turbulence_length_m > 0 ? pr->turbulence_length_m
+                                                     : FG_TURBULENCE_DEFAULT_LENGTH_M,
+    };
+    /* Abe's model places one source per stride segments */
+    size_t stride = d->model == FG_MODEL_ABE ? (n - 1 + FG_ABE_MAX_SOURCES - 1) / FG_ABE_MAX_SOURCES
+                                             : 1;
+    uint32_t m = 0;
+    for (size_t i = 1; i < n; i += stride) {
+        fg_event *ev = &v->events[m++];
+        segment_event(d, s, strike, i, &rng, ev);
+        if (pr->turbulence_s > 0)
+            ev->emit_s += fg_turbulence_offset_s(&turbulence, ev->mid);
+        if (pr->ground_reflection > 0)
+            image_event(ev, pr->ground_reflection, &v->events[m++]);
+    }
+    v->event_count = m;
+    for (uint32_t k = 0; k < m; k++) {
+        fg_event *ev = &v->events[k];
         ev->serial = serial;
         ev->start_s = INFINITY;
-        for (unsigned k = 0; k < ears.count; k++) {
-            fg_event_geometry(e, p, ev, ears.pos[k], (int)k);
-            double half = (ev->shape[k].psi + ev->shape[k].s) * ev->half_len_m / c;
-            if (ev->center_s[k] - half < ev->start_s)
-                ev->start_s = ev->center_s[k] - half;
+        for (unsigned j = 0; j < ears.count; j++) {
+            fg_event_geometry(e, v, ev, &ears, (int)j);
+            ev->start_s = fmin(ev->start_s, fg_event_start_s(e, v, ev, (int)j));
         }
     }
-    v->event_count = (uint32_t)(n - 1);
     sort_by_start(v->events, v->event_count, s);
     v->main_count = 0;
     for (uint32_t k = 0; k < v->event_count; k++)

@@ -18,9 +18,6 @@
 #ifndef FULGUR_REFRACTION_INTERNAL_H
 #define FULGUR_REFRACTION_INTERNAL_H
 
-#define FG_REFRACTION_STORM_RADIUS_M 55000.0
-#define FG_REFRACTION_MIN_RADIUS_M 20000.0
-#define FG_REFRACTION_MAX_RADIUS_M 200000.0
 
 /* Arc length for a chord chord_m; radius_m 0 or infinite: the chord. */
 double fg_refraction_path_m(double chord_m, double radius_m);

@@ -44,11 +44,61 @@ typedef struct voice_block {
     double margin_s;
 } voice_block;
 
+/* Adds ear ch of event ev, played by instance in, to the buses, splitting
+ * it with the head-shadowed twin bus. Returns its status and its first and
+ * last sample relative to the block. */
+static wm_status add_event(fg_engine *e, const fg_voice *v, const fg_event *ev,
+                           const fg_instance *in, const voice_block *vb, unsigned ch, long *first,
+                           long *last)
+{
+    const fg_block_context *ctx = vb->ctx;
+    const double fs = e->cfg.sample_rate_hz;
+    const unsigned n = ctx->frames;
+    unsigned bus = ev->bus[ch];
+    double shadow = ev->shadow[ch];
+    /* shares below 2 % go whole to one side */
+    double share[2] = {shadow < 0.02 ? 1.0 : shadow > 0.98 ? 0.0 : 1.0 - shadow,
+                       shadow < 0.02 ? 0.0 : shadow > 0.98 ? 1.0 : shadow};
+    if (v->model == FG_MODEL_ABE) {
+        fg_abe_wave w = ev->abe[ch];
+        w.arrival_s += in->offset_s + vb->origin_frame / fs;
+        int64_t a, b;
+        fg_abe_wave_span(&w, fs, &a, &b);
+        *first = (long)a;
+        *last = (long)b;
+        if (b < 0)
+            return WM_DONE;
+        if (a >= (int64_t)n)
+            return WM_PENDING;
+        double peak = w.peak_pa;
+        for (int k = 0; k < 2; k++) {
+            if (share[k] == 0.0)
+                continue;
+            w.peak_pa = peak * share[k];
+            fg_abe_wave_render(&w, fs, 0, fg_bus_pre(ctx->buses, bus + k * FG_BUS_PLAIN, ch), n);
+        }
+        return WM_SOUNDING;
+    }
+    wm_event we = {
+        .shape = ev->shape[ch],
+        .center = vb->origin_frame + (in->offset_s + ev->center_s[ch]) * fs,
+        .width = fs * ev->half_len_m / e->cfg.speed_of_sound_m_s,
+    };
+    wm_event_span(&we, first, last);
+    wm_status status = WM_DONE;
+    for (int k = 0; k < 2; k++) {
+        if (share[k] == 0.0)
+            continue;
+        we.shape.b = ev->shape[ch].b * share[k];
+        status = wm_block_add(&ctx->buses->bus[bus + k * FG_BUS_PLAIN].block[ch], &we);
+    }
+    return status;
+}
+
 /* Renders one instance; returns true once all its events are done. */
 static bool render_instance(fg_engine *e, fg_voice *v, fg_instance *in, const voice_block *vb)
 {
     const fg_block_context *ctx = vb->ctx;
-    const double fs = e->cfg.sample_rate_hz, c = e->cfg.speed_of_sound_m_s;
     const uint32_t n = in->main_only ? v->main_count : v->event_count;
     const uint32_t first_new = in->hi;
     while (in->hi < n &&
@@ -60,26 +110,18 @@ static bool render_instance(fg_engine *e, fg_voice *v, fg_instance *in, const vo
         fg_event *ev = instance_event(v, in, k);
         if (ev->serial != ctx->serial) {
             for (unsigned ch = 0; ch < ctx->ears->count; ch++)
-                fg_event_geometry(e, &v->sound, ev, ctx->ears->pos[ch], (int)ch);
+                fg_event_geometry(e, v, ev, ctx->ears, (int)ch);
             ev->serial = ctx->serial;
         }
         bool done = true;
         long lost_here = 0;
         for (unsigned ch = 0; ch < ctx->ears->count; ch++) {
-            wm_event we = {
-                .shape = ev->shape[ch],
-                .center = vb->origin_frame + (in->offset_s + ev->center_s[ch]) * fs,
-                .width = fs * ev->half_len_m / c,
-            };
-            if (wm_block_add(&ctx->blocks[ch], &we) != WM_DONE)
+            long a, b;
+            if (add_event(e, v, ev, in, vb, ch, &a, &b) != WM_DONE)
                 done = false;
-            if (k >= first_new) {
-                long a, b;
-                wm_event_span(&we, &a, &b);
-                long missed = a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
-                if (missed > lost_here)
-                    lost_here = missed;
-            }
+            long missed = k >= first_new && a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
+            if (missed > lost_here)
+                lost_here = missed;
         }
         if (lost_here > 0) {
             late++;

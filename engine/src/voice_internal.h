@@ -11,6 +11,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "abe_voice_internal.h"
 #include "fulgur/engine.h"
 #include "rng_internal.h"
 #include "wmwave_internal.h"
@@ -22,18 +23,24 @@
 /* One segment, prepared at post time. Times are seconds after the emission
  * of the instance that plays it. */
 typedef struct fg_event {
-    double mid[3];        /* segment midpoint, metres */
+    double mid[3];        /* segment midpoint, metres (mirrored for a ground image) */
     double dir[3];        /* unit vector along the segment */
     double half_len_m;    /* l */
     double t0_s;          /* baseline half-duration with its fluctuation */
-    double emit_s;        /* when the return stroke passes the midpoint */
+    double emit_s;        /* when the return stroke passes the midpoint, plus turbulence */
+    double gain;          /* the ground's reflection coefficient for an image, else 1 */
     double start_s;       /* earliest waveform start, either ear, at the post pose */
     uint32_t segment;     /* index of the child node, for a stable order */
     bool main;            /* on the main channel */
-    /* per-ear shape for the pose with this serial */
+    /* per-ear state for the pose with this serial */
     unsigned serial;
-    double center_s[2];   /* arrival of tau = 0 */
-    wm_shape shape[2];
+    double center_s[2];   /* WM: arrival of tau = 0 */
+    union {
+        wm_shape shape[2];     /* FG_MODEL_WM */
+        fg_abe_wave abe[2];    /* FG_MODEL_ABE: arrival relative to the emission */
+    };
+    uint8_t bus[2];       /* the filter bus of each ear (bus_internal.h) */
+    float shadow[2];      /* head shadow: the share sent to the shadowed twin */
 } fg_event;
 
 typedef struct fg_instance {
@@ -49,6 +56,8 @@ typedef struct fg_voice {
     uint32_t event_count, main_count;
     size_t extent;             /* offset of events/main_index in the engine storage */
     fg_sound_params sound;
+    fg_propagation propagation;
+    fg_voice_model model;
     double emit_time_s;        /* or FG_EMIT_NOW */
     double post_position[3];   /* listener centre when prepared */
     uint32_t strokes;

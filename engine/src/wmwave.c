@@ -109,6 +109,15 @@ void wm_block_begin(wm_block *b, double *d3, size_t n)
     memset(d3, 0, n * sizeof *d3);
 }
 
+void wm_block_restart(wm_block *b, size_t n)
+{
+    if (b->touched)
+        memset(b->d3, 0, b->n * sizeof *b->d3);
+    b->n = n;
+    b->state[0] = b->state[1] = b->state[2] = 0.0;
+    b->touched = false;
+}
+
 /* Which quadratic piece of p holds tau: 0 before the wave, 1 the rising
  * shell, 2 the middle, 3 the falling shell, 4 after. */
 static int piece(const wm_shape *w, double tau)

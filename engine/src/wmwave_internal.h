@@ -63,6 +63,10 @@ typedef enum wm_status {
 
 void wm_block_begin(wm_block *b, double *d3, size_t n);
 
+/* Starts the next block of n on the same storage, clearing only what the
+ * previous block wrote. The storage must have been zero when first used. */
+void wm_block_restart(wm_block *b, size_t n);
+
 /* Adds event e (positions relative to the block start) to the block. The
  * cost is a few closed-form evaluations per breakpoint in the block plus
  * three for the state, whatever the waveform's length. */

@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "fulgur/defs.h"
+#include "fulgur/propagation.h"
 #include "fulgur/result.h"
 #include "fulgur/sound.h"
 #include "fulgur/tree.h"
@@ -32,6 +33,10 @@ typedef struct fg_engine_config {
     double ear_spacing_m;         /* 0.18; distance between the two ears */
     double max_lookahead_s;       /* 0.25; cap on the motion look-ahead (see fg_engine_render) */
     uint32_t max_adopt_per_block; /* 8; posted voices the audio thread takes per block */
+    /* The air, for FG_ABSORPTION_ISO9613 (ISO 9613-1). */
+    double air_temperature_k;     /* 293.15 (20 degC) */
+    double air_humidity_pct;      /* 70; relative humidity in (0, 100] */
+    double air_pressure_kpa;      /* 101.325 */
 } fg_engine_config;
 
 /* Strokes of one discharge at most (the log-series tail is cut here). */
@@ -50,7 +55,9 @@ typedef struct fg_discharge {
     double repeat_min_s;    /* continuous: interval range, default 0.010 .. 0.050 s */
     double repeat_max_s;
     double duration_s;      /* continuous: stop after this long; 0 = until fg_engine_stop */
-    uint64_t seed;          /* T0 fluctuation, stroke count and intervals, repeat intervals */
+    uint64_t seed;          /* T0 fluctuation, strokes, repeats, turbulence */
+    fg_propagation propagation; /* zero: free, still air */
+    fg_voice_model model;   /* FG_MODEL_WM (zero) or FG_MODEL_ABE */
 } fg_discharge;
 
 /* Identifies a posted voice until it is collected. Never 0. */
@@ -85,7 +92,7 @@ FG_API void fg_engine_config_default(fg_engine_config *config);
  * Errors: FG_ERR_NULL out; FG_ERR_SAMPLE_RATE rate outside [8000, 384000];
  * FG_ERR_NOT_FINITE a NaN/inf field; FG_ERR_ARGUMENT channels not 1 or 2, a
  * negative speed/spacing/look-ahead, block > 65536, voices or segments too
- * large; FG_ERR_NO_MEMORY. */
+ * large, air outside 200-350 K, (0, 100] %, 10-200 kPa; FG_ERR_NO_MEMORY. */
 FG_API FG_NODISCARD fg_result fg_engine_create(const fg_engine_config *config, fg_engine **out);
 
 /* Frees the engine and every voice, sounding or not. NULL is a no-op. No
@@ -103,10 +110,11 @@ FG_API void fg_engine_get_config(const fg_engine *engine, fg_engine_config *out)
  * [sim-thread]
  * Errors: FG_ERR_NULL engine/discharge/nodes; FG_ERR_TREE the tree fails
  * fg_tree_check; FG_ERR_NOT_FINITE / FG_ERR_ARGUMENT a parameter (see
- * fg_sound_params_check, strokes > FG_MAX_STROKES, negative emit time other
- * than FG_EMIT_NOW, continuous with strokes > 1, repeat range outside
- * (0, 10 s] or min > max); FG_ERR_CAPACITY more segments than
- * segment_capacity; FG_ERR_POOL_FULL no free voice or segment space now;
+ * fg_sound_params_check and fg_propagation_check, strokes > FG_MAX_STROKES,
+ * negative emit time other than FG_EMIT_NOW, continuous with strokes > 1,
+ * repeat range outside (0, 10 s] or min > max, unknown model);
+ * FG_ERR_CAPACITY more segments than segment_capacity (a ground image
+ * counts each segment twice); FG_ERR_POOL_FULL no free voice or segment space now;
  * FG_ERR_QUEUE_FULL the ring to the audio thread is full. On any error
  * nothing changes except the dropped_posts counter for the last two. */
 FG_API FG_NODISCARD fg_result fg_engine_post(fg_engine *engine, const fg_discharge *discharge,

@@ -5,6 +5,7 @@
 #include "fulgur/defs.h"
 #include "fulgur/charges.h"
 #include "fulgur/engine.h"
+#include "fulgur/propagation.h"
 #include "fulgur/lightning.h"
 #include "fulgur/result.h"
 #include "fulgur/sound.h"

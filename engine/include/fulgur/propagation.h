@@ -1,0 +1,76 @@
+/* fulgur — what the air does between a discharge and the ear.
+ *
+ * Every effect is off in a zeroed struct (a "pure" render in free, still
+ * air), and each has a physical parameter whose zero means its default once
+ * the effect is switched on. They apply per discharge, at post time where
+ * they can (travel times, shadow fades, the ground image) and on the audio
+ * thread only in bounded form (a few filter buses shared by all voices,
+ * whatever their segment count).
+ */
+#ifndef FULGUR_PROPAGATION_H
+#define FULGUR_PROPAGATION_H
+
+#include "fulgur/defs.h"
+#include "fulgur/result.h"
+
+typedef enum fg_absorption {
+    FG_ABSORPTION_OFF = 0,
+    /* ISO 9613-1 for the engine's air: each ear's signal passes through one
+     * of FG_ABSORPTION_BANDS distance-band buses, whose minimum-phase IIR
+     * is fitted to the band's centre distance (10 m to 30 km). */
+    FG_ABSORPTION_ISO9613 = 1,
+    /* Abe et al.'s fixed alternative: a 200 Hz low-pass FIR of order 51 on
+     * every source farther than abe_fir_distance_m. */
+    FG_ABSORPTION_ABE_FIR = 2
+} fg_absorption;
+
+#define FG_ABSORPTION_BANDS 12
+
+typedef struct fg_propagation {
+    /* Refraction (Glassner): sound travels on circular arcs of this radius;
+     * a listener at horizontal distance D hears no source below D^2/2R,
+     * faded in over that zone. 0 = straight rays; else 20 km .. 200 km (a
+     * storm: 55 km). */
+    double refraction_radius_m;
+    /* Turbulence: a smooth, seeded travel-time offset along the channel of
+     * at most this many seconds (0 = off; 2 ms is a windy storm's), varying
+     * over the correlation length (0 = 50 m). */
+    double turbulence_s;
+    double turbulence_length_m;
+    fg_absorption absorption;
+    double abe_fir_distance_m;  /* FG_ABSORPTION_ABE_FIR: 0 = 1000 m */
+    /* Ground reflection: an image source below z = 0 with this pressure
+     * reflection coefficient, (0, 1]; 0 = off. Doubles the events a
+     * discharge holds. */
+    double ground_reflection;
+    /* Head shadow: non-zero adds an interaural level difference at high
+     * frequencies, up to -10 dB for a source straight behind the head on
+     * the far side, on top of the per-ear delays. */
+    int head_shadow;
+} fg_propagation;
+
+/* The voice model a discharge is rendered with. */
+typedef enum fg_voice_model {
+    FG_MODEL_WM = 0,   /* one WM-wave per segment (Matsuyama) */
+    FG_MODEL_ABE = 1   /* Abe et al.: harmonic-series N-waves per node, falling in
+                        * pitch and level, pitch set by height, loudness ~ 1/r^2 */
+} fg_voice_model;
+
+/* Refraction radii accepted when refraction is on, and a storm's. */
+#define FG_REFRACTION_MIN_M 20e3
+#define FG_REFRACTION_MAX_M 200e3
+#define FG_REFRACTION_STORM_M 55e3
+
+/* Defaults a host can offer when an effect is switched on. */
+#define FG_TURBULENCE_DEFAULT_S 0.002
+#define FG_TURBULENCE_DEFAULT_LENGTH_M 50.0
+#define FG_ABE_FIR_DEFAULT_DISTANCE_M 1000.0
+#define FG_GROUND_DEFAULT_REFLECTION 0.9
+
+/* Checks every field: finite; radius 0 or within the range above;
+ * turbulence >= 0 and < 1 s, length >= 0; a known absorption mode; Abe
+ * distance >= 0; reflection in [0, 1]. [any-thread]
+ * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT. */
+FG_API FG_NODISCARD fg_result fg_propagation_check(const fg_propagation *p);
+
+#endif

@@ -1,0 +1,310 @@
+/* The air between the discharge and the ear, through the engine: the
+ * shadow zone's fade, the ground image's delay and level, turbulence's
+ * bounded offsets, absorption routed through the band and FIR buses (equal
+ * to filtering the free-air render), head shadow on the far ear only, and
+ * Abe's voice model. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "abe_lowpass_internal.h"
+#include "absorb_filter_internal.h"
+#include "distance_bands_internal.h"
+#include "engine_fixture.h"
+#include "fulgur/fulgur.h"
+#include "ground_internal.h"
+#include "refraction_internal.h"
+
+#define FS 48000.0
+#define C 343.0
+
+typedef struct render_case {
+    fg_node nodes[2];
+    fg_propagation prop;
+    fg_voice_model model;
+    uint32_t channels;
+    double seconds;
+    fg_listener head;
+} render_case;
+
+/* A lightning segment 1.5 m long (vertical unless dir says otherwise). */
+static void lightning_segment(render_case *rc, double x, double y, double z)
+{
+    memset(rc, 0, sizeof *rc);
+    fx_segment(rc->nodes, (double[]){x, y, z}, (double[]){0, 0, 1}, 1.5);
+    rc->channels = 1;
+    rc->head = (fg_listener){.position = {0, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
+}
+
+/* Renders rc into a fresh buffer per channel (caller frees). */
+static float **render(const render_case *rc, size_t *frames)
+{
+    fg_engine_config cfg = {.sample_rate_hz = FS, .channels = rc->channels,
+                            .speed_of_sound_m_s = C, .max_block_frames = 256};
+    fg_engine *e;
+    assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
+    assert_int_equal(fg_engine_set_listener(e, &rc->head), FG_OK);
+    fg_discharge d = {.nodes = rc->nodes, .node_count = 2, .strokes = 1, .seed = 5,
+                      .propagation = rc->prop, .model = rc->model};
+    assert_int_equal(fg_preset_sound(FG_PRESET_LIGHTNING, &d.sound), FG_OK);
+    d.sound.t0_jitter = 0;
+    assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
+    *frames = (size_t)(rc->seconds * FS);
+    float **planes = calloc(rc->channels, sizeof *planes);
+    for (uint32_t ch = 0; ch < rc->channels; ch++)
+        planes[ch] = calloc(*frames, sizeof **planes);
+    fx_render(e, planes, rc->channels, *frames, 256);
+    fg_engine_stats st;
+    fg_engine_get_stats(e, &st);
+    assert_int_equal(st.late_events, 0);
+    fg_engine_destroy(e);
+    return planes;
+}
+
+static void release(float **planes, uint32_t channels)
+{
+    for (uint32_t ch = 0; ch < channels; ch++)
+        free(planes[ch]);
+    free(planes);
+}
+
+static void shadow_zone_fades_by_the_smoothstep(void **state)
+{
+    (void)state;
+    /* D = 3 km, R = 55 km: the zone is ~82 m deep */
+    static const double heights[] = {20.0, 41.0, 60.0, 200.0};
+    for (size_t i = 0; i < sizeof heights / sizeof heights[0]; i++) {
+        render_case rc;
+        lightning_segment(&rc, 0, 3000, heights[i]);
+        rc.seconds = 9.5;
+        size_t n;
+        float **straight = render(&rc, &n);
+        rc.prop.refraction_radius_m = FG_REFRACTION_STORM_M;
+        float **bent = render(&rc, &n);
+        double want = fg_shadow_gain(heights[i], 3000.0, FG_REFRACTION_STORM_M);
+        double got = sqrt(fx_energy(bent[0], 0, n) / fx_energy(straight[0], 0, n));
+        assert_true(fabs(got - want) < 1e-3 + 1e-3 * want);
+        if (heights[i] < 82.0)
+            assert_true(want < 0.95);
+        /* the arc is longer: the refracted wave comes later, never earlier */
+        assert_true(fx_first_nonzero(bent[0], n) >= fx_first_nonzero(straight[0], n));
+        release(straight, 1);
+        release(bent, 1);
+    }
+}
+
+static void ground_image_arrives_at_the_geometric_delay(void **state)
+{
+    (void)state;
+    render_case rc;
+    /* horizontal, so both paths see it broadside */
+    lightning_segment(&rc, 0, 300, 200);
+    fx_segment(rc.nodes, (double[]){0, 300, 200}, (double[]){1, 0, 0}, 1.5);
+    rc.seconds = 1.5;
+    rc.prop.ground_reflection = 0.8;
+    size_t n;
+    float **out = render(&rc, &n);
+    size_t onsets[4];
+    size_t found = fx_onsets(out[0], n, 1e-4f, 100, onsets, 4);
+    assert_int_equal(found, 2);
+    double src[3] = {0, 300, 200}, ear[3] = {0, 0, 1.7};
+    double direct = sqrt(300.0 * 300 + 198.3 * 198.3);
+    double image = sqrt(300.0 * 300 + 201.7 * 201.7);
+    assert_true(fabs(fg_ground_extra_path_m(src, ear) - (image - direct)) < 1e-9);
+    double want = (image - direct) / C * FS;
+    assert_true(fabs((double)(onsets[1] - onsets[0]) - want) <= 1.0);
+    /* its level: the coefficient times eq. 3 at the longer distance */
+    float p_direct = fx_peak(out[0], onsets[0] + 100), p_image = fx_peak(out[0] + onsets[1], n - onsets[1]);
+    double ps_ratio = direct / image * sqrt((1 + 0.524 * log(direct / 10)) / (1 + 0.524 * log(image / 10)));
+    assert_true(fabs(p_image / p_direct - 0.8 * ps_ratio) < 0.02);
+    release(out, 1);
+}
+
+static void turbulence_offsets_are_bounded_and_seeded(void **state)
+{
+    (void)state;
+    double moved = 0;
+    for (int seed = 0; seed < 8; seed++) {
+        render_case rc;
+        lightning_segment(&rc, 0, 600, 300 + 40 * seed);
+        rc.seconds = 2.5;
+        size_t n;
+        float **calm = render(&rc, &n);
+        rc.prop.turbulence_s = 0.002;
+        float **windy = render(&rc, &n);
+        long shift = fx_first_nonzero(windy[0], n) - fx_first_nonzero(calm[0], n);
+        assert_true(labs(shift) <= (long)(0.002 * FS) + 1);
+        moved = fmax(moved, labs(shift) / FS);
+        /* only the timing changes */
+        assert_true(fabs(fx_energy(windy[0], 0, n) / fx_energy(calm[0], 0, n) - 1) < 1e-4);
+        release(calm, 1);
+        release(windy, 1);
+    }
+    assert_true(moved > 0.2 * 0.002);
+}
+
+/* The engine's absorbed render equals the free-air render through the
+ * same filter, within float rounding. */
+static void absorption_equals_filtering_the_free_render(void **state)
+{
+    (void)state;
+    static const double distances[] = {150.0, 1200.0, 4000.0};
+    for (size_t i = 0; i < sizeof distances / sizeof distances[0]; i++) {
+        render_case rc;
+        lightning_segment(&rc, 0, distances[i], 1.7);
+        fx_segment(rc.nodes, (double[]){0, distances[i], 1.7}, (double[]){1, 0, 0}, 1.5);
+        rc.seconds = distances[i] / C + 0.2;
+        size_t n;
+        float **dry = render(&rc, &n);
+        rc.prop.absorption = FG_ABSORPTION_ISO9613;
+        float **wet = render(&rc, &n);
+
+        fg_band_plan plan;
+        assert_int_equal(fg_band_plan_init(&plan, 10.0, 30000.0, FG_ABSORPTION_BANDS), FG_OK);
+        fg_air air = {293.15 - 273.15, 70.0, 101.325}; /* the engine default */
+        fg_iir f;
+        fg_absorb_design(&f, &air, plan.centre_m[fg_band_nearest(&plan, distances[i])], FS);
+        fg_iir_reset(&f);
+        fg_iir_process(&f, dry[0], n);
+        double peak = fx_peak(dry[0], n), err = 0;
+        for (size_t k = 0; k < n; k++)
+            err = fmax(err, fabs(dry[0][k] - wet[0][k]));
+        assert_true(peak > 0);
+        assert_true(err <= 1e-5 * peak);
+        release(dry, 1);
+        release(wet, 1);
+    }
+}
+
+static void abe_fir_filters_only_distant_sources(void **state)
+{
+    (void)state;
+    static const double distances[] = {500.0, 2000.0};
+    for (size_t i = 0; i < 2; i++) {
+        render_case rc;
+        lightning_segment(&rc, 0, distances[i], 1.7);
+        rc.seconds = distances[i] / C + 0.3;
+        size_t n;
+        float **dry = render(&rc, &n);
+        rc.prop.absorption = FG_ABSORPTION_ABE_FIR; /* beyond 1 km by default */
+        float **wet = render(&rc, &n);
+        if (distances[i] < FG_ABE_FIR_DEFAULT_DISTANCE_M) {
+            assert_memory_equal(dry[0], wet[0], n * sizeof(float));
+        } else {
+            fg_abe_fir *f = malloc(sizeof *f);
+            assert_int_equal(fg_abe_fir_init(f, FS), FG_OK);
+            fg_abe_fir_process(f, dry[0], n);
+            double peak = fx_peak(dry[0], n), err = 0;
+            for (size_t k = 0; k < n; k++)
+                err = fmax(err, fabs(dry[0][k] - wet[0][k]));
+            assert_true(peak > 0);
+            assert_true(err <= 1e-5 * peak);
+            free(f);
+        }
+        release(dry, 1);
+        release(wet, 1);
+    }
+}
+
+static void head_shadow_lowers_only_the_far_ear(void **state)
+{
+    (void)state;
+    render_case rc;
+    /* 30 m to the listener's right (+x) */
+    lightning_segment(&rc, 30, 0, 1.7);
+    rc.channels = 2;
+    rc.seconds = 0.2;
+    size_t n;
+    float **open = render(&rc, &n);
+    rc.prop.head_shadow = 1;
+    float **shaded = render(&rc, &n);
+    /* the right ear faces the source: untouched */
+    assert_memory_equal(open[1], shaded[1], n * sizeof(float));
+    double left_open = fx_energy(open[0], 0, n), left_shaded = fx_energy(shaded[0], 0, n);
+    assert_true(left_shaded < 0.8 * left_open);
+    assert_true(left_shaded > 0.05 * left_open);
+    release(open, 2);
+    release(shaded, 2);
+}
+
+static size_t crossings(const float *x, size_t a, size_t b)
+{
+    size_t count = 0;
+    for (size_t k = a + 1; k < b; k++)
+        count += (x[k - 1] < 0) != (x[k] < 0);
+    return count;
+}
+
+static void abe_model_falls_in_pitch(void **state)
+{
+    (void)state;
+    render_case rc;
+    lightning_segment(&rc, 0, 500, 100);
+    rc.model = FG_MODEL_ABE;
+    rc.seconds = 2.5;
+    size_t n;
+    float **a = render(&rc, &n);
+    float **b = render(&rc, &n);
+    assert_memory_equal(a[0], b[0], n * sizeof(float));
+    long start = fx_first_nonzero(a[0], n);
+    assert_true(start > 0);
+    double arrival = sqrt(500.0 * 500 + 98.3 * 98.3) / C * FS;
+    assert_true(fabs(start - arrival) <= 2.0);
+    size_t w = (size_t)(0.1 * FS), s = (size_t)start;
+    size_t early = crossings(a[0], s, s + w), late = crossings(a[0], s + 4 * w, s + 5 * w);
+    assert_true(early > 0);
+    assert_true(late < early);
+    release(a, 1);
+    release(b, 1);
+}
+
+static void bad_propagation_is_refused(void **state)
+{
+    (void)state;
+    static const fg_propagation bad[] = {
+        {.refraction_radius_m = 5000.0},
+        {.refraction_radius_m = NAN},
+        {.turbulence_s = -1e-3},
+        {.turbulence_s = 2.0},
+        {.absorption = (fg_absorption)7},
+        {.ground_reflection = 1.5},
+        {.abe_fir_distance_m = -1.0},
+    };
+    fg_engine *e;
+    assert_int_equal(fg_engine_create(NULL, &e), FG_OK);
+    render_case rc;
+    lightning_segment(&rc, 0, 100, 10);
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        fg_discharge d = {.nodes = rc.nodes, .node_count = 2, .propagation = bad[i]};
+        assert_int_equal(fg_preset_sound(FG_PRESET_LIGHTNING, &d.sound), FG_OK);
+        fg_result r = fg_engine_post(e, &d, NULL);
+        assert_true(r == FG_ERR_ARGUMENT || r == FG_ERR_NOT_FINITE);
+    }
+    fg_discharge d = {.nodes = rc.nodes, .node_count = 2, .model = (fg_voice_model)9};
+    assert_int_equal(fg_preset_sound(FG_PRESET_LIGHTNING, &d.sound), FG_OK);
+    assert_int_equal(fg_engine_post(e, &d, NULL), FG_ERR_ARGUMENT);
+    fg_engine_stats st;
+    fg_engine_get_stats(e, &st);
+    assert_int_equal(st.posted, 0);
+    fg_engine_destroy(e);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(shadow_zone_fades_by_the_smoothstep),
+        cmocka_unit_test(ground_image_arrives_at_the_geometric_delay),
+        cmocka_unit_test(turbulence_offsets_are_bounded_and_seeded),
+        cmocka_unit_test(absorption_equals_filtering_the_free_render),
+        cmocka_unit_test(abe_fir_filters_only_distant_sources),
+        cmocka_unit_test(head_shadow_lowers_only_the_far_ear),
+        cmocka_unit_test(abe_model_falls_in_pitch),
+        cmocka_unit_test(bad_propagation_is_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
