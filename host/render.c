@@ -67,6 +67,9 @@ static int create_engine(render_job *job, char *err, size_t err_size)
         .max_voices = (uint32_t)s->discharge_count,
         .segment_capacity = job->segments > UINT32_MAX ? UINT32_MAX : (uint32_t)job->segments,
         .speed_of_sound_m_s = s->speed_of_sound_m_s,
+        .air_temperature_k = s->temperature_c + 273.15,
+        .air_humidity_pct = s->humidity_pct,
+        .air_pressure_kpa = s->pressure_kpa,
     };
     fg_result r = fg_engine_create(&cfg, &job->engine);
     if (r != FG_OK) {
@@ -108,6 +111,8 @@ static int post_due(render_job *job, double horizon_s, char *err, size_t err_siz
             .repeat_max_s = d->repeat_max_s,
             .duration_s = d->duration_s,
             .seed = d->seed,
+            .propagation = d->propagation,
+            .model = d->model,
         };
         fg_result r = fg_engine_post(job->engine, &post, NULL);
         if (r != FG_OK) {

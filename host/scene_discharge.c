@@ -11,7 +11,8 @@
 
 static const char *const discharge_keys[] = {
     "time", "preset", "T0", "r0", "ps0", "sigma0", "t0_jitter", "return_stroke_speed",
-    "strokes", "continuous", "seed", "offset", "tree", "generator", "description", NULL};
+    "strokes", "continuous", "seed", "offset", "propagation", "model", "tree", "generator",
+    "description", NULL};
 static const char *const continuous_keys[] = {"min_interval", "max_interval", "duration", NULL};
 
 static int parse_preset(const cJSON *obj, const char *base, scene_discharge *d, char *err,
@@ -144,6 +145,17 @@ int scene_parse_discharge(const cJSON *item, const char *path, size_t index, con
         return -1;
     d->strokes = (uint32_t)strokes;
     d->seed = seed >= 0 ? (uint64_t)seed : scene_discharge_seed(s->seed, index);
+    d->propagation = s->propagation;
+    const cJSON *prop = cJSON_GetObjectItemCaseSensitive(item, "propagation");
+    json_path_key(key, sizeof key, path, "propagation");
+    if (prop && scene_parse_propagation(prop, key, &d->propagation, err, err_size))
+        return -1;
+    const cJSON *model = cJSON_GetObjectItemCaseSensitive(item, "model");
+    json_path_key(key, sizeof key, path, "model");
+    if (model && !(cJSON_IsString(model) && (strcmp(model->valuestring, "wm") == 0 ||
+                                             strcmp(model->valuestring, "abe") == 0)))
+        return json_fail(err, err_size, key, "expected \"wm\" (Matsuyama) or \"abe\" (Abe et al.)");
+    d->model = model && strcmp(model->valuestring, "abe") == 0 ? FG_MODEL_ABE : FG_MODEL_WM;
     return parse_continuous(item, path, d, err, err_size) ||
                    parse_source(item, path, d, err, err_size)
                ? -1

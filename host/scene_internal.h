@@ -14,6 +14,11 @@ int scene_parse_listener(const cJSON *item, scene *s, char *err, size_t err_size
 int scene_parse_discharge(const cJSON *item, const char *path, size_t index, const scene *s,
                           scene_discharge *out, char *err, size_t err_size);
 
+/* "propagation" at path (an object) over *p, which holds the defaults:
+ * the keys present replace their effect's settings. */
+int scene_parse_propagation(const cJSON *item, const char *path, fg_propagation *p, char *err,
+                            size_t err_size);
+
 /* "tree" at path: reads the nodes, adds offset_m and checks the tree into
  * *nodes (caller frees) and *count. */
 int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[3],

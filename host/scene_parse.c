@@ -10,7 +10,8 @@
 
 static const char *const top_keys[] = {
     "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
-    "temperature_c", "listener", "discharges", "description", NULL};
+    "temperature_c", "humidity", "pressure", "propagation", "listener", "discharges",
+    "description", NULL};
 
 static int syntax_error(const char *text, const char *at, const char *what, char *err,
                         size_t err_size)
@@ -28,8 +29,10 @@ static int syntax_error(const char *text, const char *at, const char *what, char
 
 static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_size)
 {
-    double rate = 48000, channels = 2, block = 256, seed = 1, speed = 343, temp = 0;
+    double rate = 48000, channels = 2, block = 256, seed = 1, speed = 343, temp = 20;
     s->gain = 1;
+    s->humidity_pct = 70;
+    s->pressure_kpa = 101.325;
     if (json_number(json, "", "sample_rate", (json_range){8000, 384000, .integer = true}, &rate,
                     err, err_size) ||
         json_number(json, "", "channels", (json_range){1, 2, .integer = true}, &channels, err,
@@ -44,9 +47,17 @@ static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_siz
                     err_size) ||
         json_number(json, "", "speed_of_sound", (json_range){.lo = 100, .hi = 1000}, &speed, err,
                     err_size) ||
-        json_number(json, "", "temperature_c", (json_range){.lo = -90, .hi = 60}, &temp, err,
+        json_number(json, "", "temperature_c", (json_range){.lo = -70, .hi = 60}, &temp, err,
+                    err_size) ||
+        json_number(json, "", "humidity", (json_range){0, 100, .lo_open = true}, &s->humidity_pct,
+                    err, err_size) ||
+        json_number(json, "", "pressure", (json_range){.lo = 10, .hi = 200}, &s->pressure_kpa, err,
                     err_size))
         return -1;
+    const cJSON *prop = cJSON_GetObjectItemCaseSensitive(json, "propagation");
+    if (prop && scene_parse_propagation(prop, "propagation", &s->propagation, err, err_size))
+        return -1;
+    s->temperature_c = temp;
     if (cJSON_GetObjectItemCaseSensitive(json, "temperature_c")) {
         if (cJSON_GetObjectItemCaseSensitive(json, "speed_of_sound"))
             return json_fail(err, err_size, "temperature_c",

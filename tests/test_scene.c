@@ -43,7 +43,28 @@ static const struct {
     {WITH_SPARK("\"channels\":1,\"channels\":2,"), "channels: given twice"},
     {WITH_SPARK("\"smaple_rate\":48000,"),
      "smaple_rate: unknown key (known: sample_rate, channels, block, duration, seed, gain, "
-     "speed_of_sound, temperature_c, listener, discharges, description)"},
+     "speed_of_sound, temperature_c, humidity, pressure, propagation, listener, discharges, "
+     "description)"},
+    {WITH_SPARK("\"humidity\":0,"), "humidity: 0 is outside (0, 100]"},
+    {WITH_SPARK("\"propagation\":{\"refraction\":{\"radius\":5000}},"),
+     "propagation.refraction.radius: 5000 is outside 20000..200000"},
+    {WITH_SPARK("\"propagation\":{\"refraction\":1},"),
+     "propagation.refraction: expected true, false or an object"},
+    {WITH_SPARK("\"propagation\":{\"absorption\":\"iso\"},"),
+     "propagation.absorption: expected \"off\", \"iso9613\" or \"abe_fir\""},
+    {WITH_SPARK("\"propagation\":{\"absorption\":{\"distance\":10}},"),
+     "propagation.absorption.model: required (\"off\", \"iso9613\" or \"abe_fir\")"},
+    {WITH_SPARK("\"propagation\":{\"ground\":{\"reflection\":1.5}},"),
+     "propagation.ground.reflection: 1.5 is outside (0, 1]"},
+    {WITH_SPARK("\"propagation\":{\"turbulence\":{\"lenght\":5}},"),
+     "propagation.turbulence.lenght: unknown key (known: amplitude, length)"},
+    {WITH_SPARK("\"propagation\":{\"head_shadow\":\"yes\"},"),
+     "propagation.head_shadow: expected true or false"},
+    {WITH_SPARK("\"propagation\":{\"wind\":true},"),
+     "propagation.wind: unknown key (known: refraction, turbulence, absorption, ground, "
+     "head_shadow)"},
+    {ONE_TREE("\"model\":\"glassner\""),
+     "discharges[0].model: expected \"wm\" (Matsuyama) or \"abe\" (Abe et al.)"},
     {"[1, 2]", "scene: expected an object"},
     {"{\"discharges\": [}", "scene: JSON syntax error at line 1, column 17"},
     {"{\"discharges\":\n  [1,]}", "scene: JSON syntax error at line 2, column 6"},
@@ -55,7 +76,8 @@ static const struct {
      "discharges[0].time: required (emit time, seconds)"},
     {ONE_TREE("\"tme\":1"),
      "discharges[0].tme: unknown key (known: time, preset, T0, r0, ps0, sigma0, t0_jitter, "
-     "return_stroke_speed, strokes, continuous, seed, offset, tree, generator, description)"},
+     "return_stroke_speed, strokes, continuous, seed, offset, propagation, model, tree, "
+     "generator, description)"},
     {"{\"discharges\":[{\"time\":0,\"preset\":\"sprak\"," TREE "}]}",
      "discharges[0].preset: unknown preset \"sprak\" (spark_balls, plasma_ball, lightning)"},
     {"{\"discharges\":[{\"time\":0," TREE "}]}",
@@ -222,6 +244,41 @@ static void test_values(void **state)
     scene_deinit(&s);
 }
 
+static void test_propagation(void **state)
+{
+    (void)state;
+    scene s;
+    char err[512];
+    /* the scene's air and default effects, one discharge overriding two */
+    const char *json =
+        "{\"temperature_c\":10,\"humidity\":40,\"pressure\":95,"
+        "\"propagation\":{\"refraction\":true,\"turbulence\":{\"amplitude\":0.001},"
+        "\"absorption\":\"iso9613\",\"ground\":true,\"head_shadow\":true},"
+        "\"discharges\":[" SPARK ",{\"time\":0,\"preset\":\"spark_balls\",\"model\":\"abe\","
+        "\"propagation\":{\"refraction\":{\"radius\":80000},"
+        "\"absorption\":{\"model\":\"abe_fir\",\"distance\":300},\"ground\":false}," TREE "}]}";
+    assert_int_equal(parse(json, &s, err, sizeof err), 0);
+    assert_true(s.temperature_c == 10 && s.humidity_pct == 40 && s.pressure_kpa == 95);
+    assert_true(fabs(s.speed_of_sound_m_s - 337.5) < 1e-12);
+    const fg_propagation *a = &s.discharges[0].propagation, *b = &s.discharges[1].propagation;
+    assert_true(a->refraction_radius_m == FG_REFRACTION_STORM_M);
+    assert_true(a->turbulence_s == 0.001 && a->turbulence_length_m == FG_TURBULENCE_DEFAULT_LENGTH_M);
+    assert_int_equal(a->absorption, FG_ABSORPTION_ISO9613);
+    assert_true(a->ground_reflection == FG_GROUND_DEFAULT_REFLECTION);
+    assert_int_equal(a->head_shadow, 1);
+    assert_int_equal(s.discharges[0].model, FG_MODEL_WM);
+    assert_true(b->refraction_radius_m == 80000);
+    assert_true(b->turbulence_s == 0.001);
+    assert_int_equal(b->absorption, FG_ABSORPTION_ABE_FIR);
+    assert_true(b->abe_fir_distance_m == 300);
+    assert_true(b->ground_reflection == 0);
+    assert_int_equal(b->head_shadow, 1);
+    assert_int_equal(s.discharges[1].model, FG_MODEL_ABE);
+    assert_int_equal(fg_propagation_check(a), FG_OK);
+    assert_int_equal(fg_propagation_check(b), FG_OK);
+    scene_deinit(&s);
+}
+
 static void test_listener_path(void **state)
 {
     (void)state;
@@ -290,6 +347,7 @@ int main(void)
         cmocka_unit_test(test_bad_scenes),
         cmocka_unit_test(test_defaults),
         cmocka_unit_test(test_values),
+        cmocka_unit_test(test_propagation),
         cmocka_unit_test(test_listener_path),
         cmocka_unit_test(test_derived_seeds),
     };
