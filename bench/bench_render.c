@@ -15,14 +15,22 @@ static void check(fg_result r, const char *what)
 bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_params *params,
                             const fg_listener *listener, unsigned block)
 {
+    return bench_render_tree_with(nodes, count, params, &(fg_propagation){0}, FG_MODEL_WM,
+                                  listener, block);
+}
+
+bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_sound_params *params,
+                                 const fg_propagation *prop, fg_voice_model model,
+                                 const fg_listener *listener, unsigned block)
+{
     fg_engine_config cfg = {.sample_rate_hz = 48000, .max_block_frames = block,
-                            .segment_capacity = (uint32_t)count, .max_voices = 1};
+                            .segment_capacity = (uint32_t)(2 * count), .max_voices = 1};
     fg_engine *e;
     check(fg_engine_create(&cfg, &e), "create");
     check(fg_engine_set_listener(e, listener), "listener");
     float *planes[2] = {malloc(block * sizeof(float)), malloc(block * sizeof(float))};
     fg_discharge d = {.nodes = nodes, .node_count = count, .sound = *params, .strokes = 1,
-                      .emit_time_s = 0, .seed = 1};
+                      .emit_time_s = 0, .seed = 1, .propagation = *prop, .model = model};
     bench_run run = {0};
     double t0 = bench_now_s();
     check(fg_engine_post(e, &d, NULL), "post");

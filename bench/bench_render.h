@@ -19,4 +19,9 @@ typedef struct bench_run {
 bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_params *params,
                             const fg_listener *listener, unsigned block);
 
+/* The same with propagation effects and a voice model. */
+bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_sound_params *params,
+                                 const fg_propagation *prop, fg_voice_model model,
+                                 const fg_listener *listener, unsigned block);
+
 #endif

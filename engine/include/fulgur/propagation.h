@@ -17,7 +17,9 @@ typedef enum fg_absorption {
     FG_ABSORPTION_OFF = 0,
     /* ISO 9613-1 for the engine's air: each ear's signal passes through one
      * of FG_ABSORPTION_BANDS distance-band buses, whose minimum-phase IIR
-     * is fitted to the band's centre distance (10 m to 30 km). */
+     * is fitted to the band's centre distance (10 m to 30 km). The first
+     * discharge posted with it designs the filters on the sim thread, once
+     * per engine (about 0.3 s). */
     FG_ABSORPTION_ISO9613 = 1,
     /* Abe et al.'s fixed alternative: a 200 Hz low-pass FIR of order 51 on
      * every source farther than abe_fir_distance_m. */

@@ -1,0 +1,29 @@
+# The validation report's plots (bench/results/validation.md).
+set terminal pngcairo size 900,520 font "sans,11"
+set datafile separator ","
+set grid
+
+set output "bench/results/validation_spectra.png"
+set logscale x
+set xrange [10:10000]
+set xlabel "frequency (Hz)"
+set ylabel "power (dB, arbitrary reference)"
+set title "A 5 km bolt heard at 1 km and at 8 km (T0 = 0.5 ms, storm atmosphere)"
+plot "bench/results/validation_spectra.csv" every ::1 using 1:2 with lines lw 1.5 title "1 km", \
+     "" every ::1 using 1:3 with lines lw 1.5 title "8 km"
+
+set output "bench/results/validation_sparks.png"
+set xrange [100:24000]
+set title "Spark scale at 1 m, free air"
+plot "bench/results/validation_sparks.csv" every ::1 using 1:2 with lines lw 1.5 title "spark balls", \
+     "" every ::1 using 1:3 with lines lw 1.5 title "plasma ball"
+
+set output "bench/results/validation_shadow.png"
+unset logscale x
+set xrange [0:150]
+set yrange [0:1.05]
+set xlabel "source height (m)"
+set ylabel "level with refraction / straight rays"
+set title "Shadow zone: listener 3 km away, R = 55 km (h = 81.8 m)"
+set arrow from 81.8, graph 0 to 81.8, graph 1 nohead dt 2
+plot "bench/results/validation_shadow.csv" every ::1 using 1:2 with linespoints pt 7 title "measured per segment"

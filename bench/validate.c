@@ -1,0 +1,364 @@
+/* Validation against real thunder (DESIGN §5): renders reference scenes
+ * through the engine with the whole atmosphere on and writes
+ * bench/results/validation.md, its CSVs and plots' data:
+ *   1. spectra of a 5 km bolt heard at 1 km and at 8 km;
+ *   2. the duration of a 5 km bolt heard from 3 km (90 % of the energy);
+ *   3. the shadow zone at D = 3 km, R = 55 km, measured segment by segment;
+ *   4. the lightning preset's mean segments and sound against table 2;
+ *   5. spark-scale peak pressures and spectra at 1 m.
+ * With --check it exits non-zero when a deterministic figure leaves its
+ * tolerance (the CTest "validation"); the judgements stay in the report. */
+#include <complex.h>
+#include <fftw3.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_util.h"
+#include "fulgur/fulgur.h"
+
+#define FS 48000.0
+#define C 343.0
+#define WINDOW 16384
+#define TABLE2_SEEDS 8
+#define PI 3.14159265358979323846
+
+typedef struct signal {
+    float *x;
+    size_t n;
+} signal;
+
+static void must(fg_result r, const char *what)
+{
+    if (r != FG_OK) {
+        fprintf(stderr, "validate: %s: %s\n", what, fg_result_str(r));
+        exit(2);
+    }
+}
+
+/* The full atmosphere of a storm. */
+static fg_propagation storm(void)
+{
+    return (fg_propagation){.refraction_radius_m = FG_REFRACTION_STORM_M,
+                            .turbulence_s = FG_TURBULENCE_DEFAULT_S,
+                            .absorption = FG_ABSORPTION_ISO9613,
+                            .ground_reflection = FG_GROUND_DEFAULT_REFLECTION};
+}
+
+/* One discharge heard by one ear at the origin, 1.7 m up, until it ends. */
+static signal render(const fg_node *nodes, size_t count, const fg_sound_params *sound,
+                     const fg_propagation *prop, uint32_t strokes)
+{
+    fg_engine_config cfg = {.sample_rate_hz = FS, .channels = 1, .speed_of_sound_m_s = C,
+                            .max_block_frames = 1024, .segment_capacity = (uint32_t)(2 * count)};
+    fg_engine *e;
+    must(fg_engine_create(&cfg, &e), "create");
+    fg_listener head = {.position = {0, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
+    must(fg_engine_set_listener(e, &head), "listener");
+    fg_discharge d = {.nodes = nodes, .node_count = count, .sound = *sound, .strokes = strokes,
+                      .seed = 1, .propagation = *prop};
+    must(fg_engine_post(e, &d, NULL), "post");
+    signal s = {0};
+    size_t cap = 0;
+    fg_engine_stats st = {0};
+    while (st.finished == 0) {
+        if (s.n + 1024 > cap) {
+            cap = cap ? 2 * cap : 1 << 20;
+            s.x = realloc(s.x, cap * sizeof *s.x);
+        }
+        float *plane = s.x + s.n;
+        must(fg_engine_render(e, &plane, 1024), "render");
+        s.n += 1024;
+        fg_engine_get_stats(e, &st);
+    }
+    fg_engine_destroy(e);
+    return s;
+}
+
+/* A 5 km cloud-to-ground bolt striking at (x, y). */
+static fg_tree *bolt(double x, double y, uint64_t seed)
+{
+    fg_tree *t;
+    must(fg_tree_create(16384, &t), "tree");
+    fg_lightning_params p = {.strike_m = {x, y}, .seed = seed};
+    must(fg_lightning_generate(&p, t, NULL), "lightning");
+    return t;
+}
+
+/* Welch power spectrum (Hann, half overlap) into psd[WINDOW/2 + 1]. */
+static void spectrum(const signal *s, double *psd)
+{
+    double *in = fftw_malloc(WINDOW * sizeof *in);
+    fftw_complex *out = fftw_malloc((WINDOW / 2 + 1) * sizeof *out);
+    fftw_plan plan = fftw_plan_dft_r2c_1d(WINDOW, in, out, FFTW_ESTIMATE);
+    memset(psd, 0, (WINDOW / 2 + 1) * sizeof *psd);
+    size_t frames = 0;
+    for (size_t at = 0; at + WINDOW <= s->n; at += WINDOW / 2, frames++) {
+        for (int k = 0; k < WINDOW; k++)
+            in[k] = s->x[at + k] * (0.5 - 0.5 * cos(2 * PI * k / WINDOW));
+        fftw_execute(plan);
+        for (int k = 0; k <= WINDOW / 2; k++)
+            psd[k] += creal(out[k]) * creal(out[k]) + cimag(out[k]) * cimag(out[k]);
+    }
+    for (int k = 0; k <= WINDOW / 2; k++)
+        psd[k] /= frames ? (double)frames : 1.0;
+    fftw_destroy_plan(plan);
+    fftw_free(in);
+    fftw_free(out);
+}
+
+/* The 1/3-octave band (centres 10 Hz .. 16 kHz) holding the most energy. */
+static double peak_band_hz(const double *psd)
+{
+    double best = -1, best_hz = 0;
+    for (int i = 0; i <= 32; i++) {
+        double fc = 10.0 * pow(2.0, i / 3.0), lo = fc * pow(2.0, -1 / 6.0), hi = fc * pow(2.0, 1 / 6.0);
+        double e = 0;
+        for (int k = (int)ceil(lo * WINDOW / FS); k <= (int)(hi * WINDOW / FS) && k <= WINDOW / 2; k++)
+            e += psd[k];
+        if (e > best) {
+            best = e;
+            best_hz = fc;
+        }
+    }
+    return best_hz;
+}
+
+/* The frequency below which half the energy between 20 Hz and 5 kHz lies:
+ * a steadier measure of where a broad spectrum sits than its peak. */
+static double median_hz(const double *psd)
+{
+    int lo = (int)ceil(20.0 * WINDOW / FS), hi = (int)(5000.0 * WINDOW / FS);
+    double total = 0, run = 0;
+    for (int k = lo; k <= hi; k++)
+        total += psd[k];
+    for (int k = lo; k <= hi; k++) {
+        run += psd[k];
+        if (run >= 0.5 * total)
+            return k * FS / WINDOW;
+    }
+    return hi * FS / WINDOW;
+}
+
+/* The span holding the middle 90 % of the energy, seconds. */
+static double duration_90(const signal *s)
+{
+    double total = 0, run = 0;
+    for (size_t k = 0; k < s->n; k++)
+        total += (double)s->x[k] * s->x[k];
+    size_t a = 0, b = 0;
+    for (size_t k = 0; k < s->n; k++) {
+        run += (double)s->x[k] * s->x[k];
+        if (run < 0.05 * total)
+            a = k;
+        if (run < 0.95 * total)
+            b = k;
+    }
+    return (double)(b - a) / FS;
+}
+
+static double peak_pa(const signal *s)
+{
+    double p = 0;
+    for (size_t k = 0; k < s->n; k++)
+        p = fmax(p, fabs(s->x[k]));
+    return p;
+}
+
+static void write_spectrum(const char *name, const double *a, const double *b)
+{
+    FILE *f = bench_open_result(name);
+    fprintf(f, "hz,first_db,second_db\n");
+    for (int k = 1; k <= WINDOW / 2; k++) {
+        double hz = k * FS / WINDOW;
+        if (hz > 20000)
+            break;
+        fprintf(f, "%.3f,%.2f,%.2f\n", hz, 10 * log10(a[k] + 1e-30), 10 * log10(b[k] + 1e-30));
+    }
+    fclose(f);
+}
+
+typedef struct checks {
+    int failed;
+    FILE *md;
+} checks;
+
+static void check(checks *c, int ok, const char *what)
+{
+    fprintf(c->md, "- %s: **%s**\n", what, ok ? "pass" : "FAIL");
+    if (!ok) {
+        fprintf(stderr, "validate: failed: %s\n", what);
+        c->failed = 1;
+    }
+}
+
+int main(int argc, char **argv)
+{
+    int enforce = argc > 1 && strcmp(argv[1], "--check") == 0;
+    checks c = {0, bench_open_result("validation.md")};
+    char cpu[256];
+    bench_machine(cpu, sizeof cpu);
+    fg_sound_params lightning;
+    must(fg_preset_sound(FG_PRESET_LIGHTNING, &lightning), "preset");
+    fg_propagation air = storm();
+    static double near_psd[WINDOW / 2 + 1], far_psd[WINDOW / 2 + 1];
+    fprintf(c.md, "# Validation against real thunder\n\n"
+                  "Written by `bench/validate` (run by `scripts/bench.sh`); %s. Every render "
+                  "goes through `fg_engine_render` with refraction (R = 55 km), turbulence "
+                  "(2 ms), ISO 9613-1 absorption (20 °C, 70 %%) and a ground image (0.9), one "
+                  "ear 1.7 m up. Checks marked pass/FAIL are also run by CTest "
+                  "(`bench_validate --check`).\n\n",
+            cpu);
+
+    /* 1. spectra at 1 km and 8 km, with table 1's T0 and with a longer one */
+    fprintf(c.md, "## 1. Spectrum peak\n\nThe same 5 km bolt (seed 7) heard at 1 km and at "
+                  "8 km. Peak: the 1/3-octave band with the most energy; median: the frequency "
+                  "halving the energy between 20 Hz and 5 kHz. Published: cloud-to-ground "
+                  "thunder peaks near 50 Hz (4-125 Hz, Holmes et al. 1971), close strikes higher "
+                  "(80-160 Hz), distant ones lower (20-40 Hz); Matsuyama's near/far spectra peak "
+                  "at 100-200 Hz.\n\n"
+                  "| T0 | listener | peak band | median | peak pressure |\n|---|---|---|---|---|\n");
+    static const double t0s[] = {500e-6, 2500e-6};
+    double near_median = 0, far_median = 0, near_hz = 0, far_hz = 0;
+    for (int i = 0; i < 2; i++) {
+        fg_sound_params p = lightning;
+        p.t0_s = t0s[i];
+        signal s[2];
+        for (int j = 0; j < 2; j++) {
+            fg_tree *b = bolt(0, j == 0 ? 1000 : 8000, 7);
+            s[j] = render(fg_tree_nodes(b), fg_tree_count(b), &p, &air, 1);
+            fg_tree_destroy(b);
+        }
+        spectrum(&s[0], near_psd);
+        spectrum(&s[1], far_psd);
+        for (int j = 0; j < 2; j++) {
+            const double *psd = j == 0 ? near_psd : far_psd;
+            fprintf(c.md, "| %.1f ms%s | %s | %.0f Hz | %.0f Hz | %.2f Pa |\n", 1e3 * p.t0_s,
+                    i == 0 ? " (table 1)" : "", j == 0 ? "1 km" : "8 km", peak_band_hz(psd),
+                    median_hz(psd), peak_pa(&s[j]));
+        }
+        if (i == 0) {
+            near_median = median_hz(near_psd);
+            far_median = median_hz(far_psd);
+            near_hz = peak_band_hz(near_psd);
+            far_hz = peak_band_hz(far_psd);
+            write_spectrum("validation_spectra.csv", near_psd, far_psd);
+        }
+        free(s[0].x);
+        free(s[1].x);
+    }
+    fprintf(c.md, "\n![spectra](validation_spectra.png)\n\n");
+    check(&c, far_median < near_median, "the distant bolt sits lower than the near one (median)");
+    fprintf(c.md, "- judgement, table 1's T0: peaks at %.0f and %.0f Hz against roughly "
+                  "20-200 Hz: %s\n\n",
+            near_hz, far_hz,
+            near_hz <= 200 && far_hz <= 200 ? "inside" : "above it (see the note below)");
+
+    /* 2. duration at 3 km */
+    fg_tree *b = bolt(0, 3000, 7);
+    signal mid = render(fg_tree_nodes(b), fg_tree_count(b), &lightning, &air, 1);
+    fg_tree_destroy(b);
+    double dur = duration_90(&mid);
+    fprintf(c.md, "## 2. Duration\n\nA 5 km bolt heard from 3 km: Glassner's geometry gives "
+                  "(sqrt(3^2 + 5^2) - 3) km / c = 8.3 s between the nearest and farthest "
+                  "point. Measured span holding 90 %% of the energy: **%.2f s**.\n\n",
+            dur);
+    check(&c, dur > 5.0 && dur < 11.0, "the 90 % span lies within 5-11 s");
+    fputc('\n', c.md);
+
+    /* 3. the shadow zone, one horizontal segment per height, D = 3 km */
+    FILE *zone = bench_open_result("validation_shadow.csv");
+    fprintf(zone, "height_m,level_ratio\n");
+    double ratio_20 = 0, ratio_120 = 0;
+    fg_propagation bent = {.refraction_radius_m = FG_REFRACTION_STORM_M};
+    fg_propagation straight = {0};
+    for (int h = 5; h <= 150; h += 5) {
+        fg_node seg[2] = {{-1.5, 3000, h, -1, 0}, {1.5, 3000, h, 0, 0}};
+        signal a = render(seg, 2, &lightning, &straight, 1), r = render(seg, 2, &lightning, &bent, 1);
+        double ea = 0, er = 0;
+        for (size_t k = 0; k < a.n; k++)
+            ea += (double)a.x[k] * a.x[k];
+        for (size_t k = 0; k < r.n; k++)
+            er += (double)r.x[k] * r.x[k];
+        double ratio = sqrt(er / ea);
+        fprintf(zone, "%d,%.5f\n", h, ratio);
+        if (h == 20)
+            ratio_20 = ratio;
+        if (h == 120)
+            ratio_120 = ratio;
+        free(a.x);
+        free(r.x);
+    }
+    fclose(zone);
+    fprintf(c.md, "## 3. Shadow zone\n\nD = 3 km, R = 55 km: h = D²/2R = %.1f m. Level of a "
+                  "segment with refraction against straight rays, by height: 20 m → %.3f, "
+                  "120 m → %.3f.\n\n![shadow](validation_shadow.png)\n\n",
+            3000.0 * 3000.0 / (2 * FG_REFRACTION_STORM_M), ratio_20, ratio_120);
+    check(&c, ratio_20 < 0.3 && fabs(ratio_120 - 1) < 1e-3,
+          "faded below ~82 m (20 m: < 0.3), untouched above");
+    fputc('\n', c.md);
+
+    /* 4. table 2: the lightning preset's mean figures */
+    double segs = 0, sound = 0;
+    for (int seed = 0; seed < TABLE2_SEEDS; seed++) {
+        b = bolt(0, 3000, 100 + (uint64_t)seed);
+        signal s = render(fg_tree_nodes(b), fg_tree_count(b), &lightning, &air, 1);
+        segs += (double)(fg_tree_count(b) - 1) / TABLE2_SEEDS;
+        sound += (double)s.n / FS / TABLE2_SEEDS;
+        fg_tree_destroy(b);
+        free(s.x);
+    }
+    fprintf(c.md, "## 4. Table 2\n\n| | segments | sound |\n|---|---|---|\n"
+                  "| Matsuyama table 2 (mean) | 9438 | 13.6 s |\n"
+                  "| fulgur lightning preset, %d seeds, heard from 3 km | %.0f | %.1f s |\n\n"
+                  "The sound lasts until the last segment's wave has ended.\n\n",
+            TABLE2_SEEDS, segs, sound);
+    check(&c, fabs(segs / 9438 - 1) < 0.25, "mean segment count within 25 % of 9438");
+    fputc('\n', c.md);
+
+    /* 5. spark scale at 1 m */
+    fprintf(c.md, "## 5. Spark scale\n\nA 2 cm spark and a 20 cm plasma-ball filament "
+                  "as straight chains of their preset's segments, 1 m in front of the ear, "
+                  "free air.\n\n| preset | peak at 1 m | peak band |\n|---|---|---|\n");
+    static const fg_preset small[] = {FG_PRESET_SPARK_BALLS, FG_PRESET_PLASMA_BALL};
+    static double spark_psd[2][WINDOW / 2 + 1];
+    for (int i = 0; i < 2; i++) {
+        fg_sound_params p;
+        fg_preset_scale scale;
+        must(fg_preset_sound(small[i], &p), "preset");
+        must(fg_preset_get_scale(small[i], &scale), "scale");
+        size_t n = (size_t)(scale.path_m / (2 * scale.half_step_m)) + 1;
+        fg_node *chain = calloc(n, sizeof *chain);
+        for (size_t k = 0; k < n; k++)
+            chain[k] = (fg_node){0.002 * sin(1.7 * k) * scale.path_m, 1.0,
+                                 1.7 + scale.path_m / 2 - 2 * scale.half_step_m * k, (int32_t)k - 1, 0};
+        signal s = render(chain, n, &p, &straight, 1);
+        signal padded = {calloc(WINDOW, sizeof(float)), WINDOW};
+        memcpy(padded.x, s.x, (s.n < WINDOW ? s.n : WINDOW) * sizeof(float));
+        spectrum(&padded, spark_psd[i]);
+        fprintf(c.md, "| %s | %.1f Pa (%.0f dB SPL) | %.0f Hz |\n", fg_preset_name(small[i]),
+                peak_pa(&s), 20 * log10(peak_pa(&s) / 20e-6), peak_band_hz(spark_psd[i]));
+        free(chain);
+        free(s.x);
+        free(padded.x);
+    }
+    write_spectrum("validation_sparks.csv", spark_psd[0], spark_psd[1]);
+    fprintf(c.md, "\n![sparks](validation_sparks.png)\n\n");
+
+    fprintf(c.md, "## Reading the figures\n\n"
+                  "The WM-wave's spectrum is set by T: T0 = 500 µs (Matsuyama table 1) stretched "
+                  "to ~1 ms at kilometres makes single N-waves peak near 300-500 Hz; the thunder's "
+                  "low end comes from the arrival clustering of thousands of segments and from "
+                  "absorption, which removes the highs with distance. With table 1's T0 the "
+                  "peaks sit above the published 20-200 Hz; that gap is the paper's T0, chosen "
+                  "by ear, not the renderer: T0 scales the whole spectrum, and the T0 = 2.5 ms "
+                  "rows (a channel relaxation radius of a few metres, after Few) land where "
+                  "recorded thunder does. T0 is a scene parameter; the preset keeps table 1.\n");
+    fclose(c.md);
+    free(mid.x);
+    printf("validation: 1 km peak %.0f Hz (median %.0f), 8 km peak %.0f Hz (median %.0f), "
+           "3 km duration %.2f s, table 2 %.0f segments %.1f s\n",
+           near_hz, near_median, far_hz, far_median, dur, segs, sound);
+    return enforce ? c.failed : 0;
+}
