@@ -1,0 +1,201 @@
+/* The field's grid: creation with the memory check, geometry, trilinear
+ * sampling, and the field source a growth model reads. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "field_internal.h"
+
+static int size_or_default(int s)
+{
+    return s == 0 ? FG_FIELD_DEFAULT_SIZE : s;
+}
+
+static int sizes(const fg_grid_config *c, int n[3])
+{
+    for (int a = 0; a < 3; a++) {
+        n[a] = size_or_default(c->size[a]);
+        if (n[a] < FG_FIELD_MIN_SIZE || n[a] > FG_FIELD_MAX_SIZE)
+            return 0;
+    }
+    return 1;
+}
+
+size_t fg_field_memory_bytes(const fg_grid_config *config)
+{
+    int n[3];
+    if (!config || !sizes(config, n))
+        return 0;
+    size_t count = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
+    /* phi, r, z, p, q and the labels */
+    return count * (5 * sizeof(double) + 1) + fg_multigrid_bytes(n) + sizeof(fg_field);
+}
+
+fg_result fg_field_create(const fg_grid_config *config, fg_field **out)
+{
+    if (!config || !out)
+        return FG_ERR_NULL;
+    int n[3];
+    for (int a = 0; a < 3; a++)
+        if (!isfinite(config->min_m[a]) || !isfinite(config->max_m[a]))
+            return FG_ERR_NOT_FINITE;
+    if (!sizes(config, n))
+        return FG_ERR_ARGUMENT;
+    for (int a = 0; a < 3; a++)
+        if (!(config->max_m[a] > config->min_m[a]))
+            return FG_ERR_ARGUMENT;
+    size_t limit = config->max_bytes ? config->max_bytes : FG_FIELD_DEFAULT_MAX_BYTES;
+    if (fg_field_memory_bytes(config) > limit)
+        return FG_ERR_CAPACITY;
+
+    fg_field *f = calloc(1, sizeof *f);
+    if (!f)
+        return FG_ERR_NO_MEMORY;
+    f->config = *config;
+    f->config.max_bytes = limit;
+    for (int a = 0; a < 3; a++) {
+        f->config.size[a] = n[a];
+        f->h[a] = (config->max_m[a] - config->min_m[a]) / (n[a] - 1);
+    }
+    size_t count = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
+    f->phi = calloc(count, sizeof(double));
+    f->r = calloc(count, sizeof(double));
+    f->z = calloc(count, sizeof(double));
+    f->p = calloc(count, sizeof(double));
+    f->q = calloc(count, sizeof(double));
+    f->label = calloc(count, 1);
+    f->b_norm = -1.0;
+    if (!f->phi || !f->r || !f->z || !f->p || !f->q || !f->label ||
+        fg_multigrid_init(f) != FG_OK) {
+        fg_field_destroy(f);
+        return FG_ERR_NO_MEMORY;
+    }
+    *out = f;
+    return FG_OK;
+}
+
+void fg_field_destroy(fg_field *f)
+{
+    if (!f)
+        return;
+    fg_multigrid_deinit(f);
+    free(f->phi);
+    free(f->r);
+    free(f->z);
+    free(f->p);
+    free(f->q);
+    free(f->label);
+    free(f);
+}
+
+void fg_field_get_config(const fg_field *f, fg_grid_config *out)
+{
+    *out = f->config;
+}
+
+void fg_field_cell(const fg_field *f, double out_m[3])
+{
+    for (int a = 0; a < 3; a++)
+        out_m[a] = f->h[a];
+}
+
+void fg_field_nearest(const fg_field *f, const double x[3], int ijk[3])
+{
+    for (int a = 0; a < 3; a++) {
+        double u = floor((x[a] - f->config.min_m[a]) / f->h[a] + 0.5);
+        double top = f->config.size[a] - 1;
+        ijk[a] = (int)(u < 0.0 ? 0.0 : (u > top ? top : u));
+    }
+}
+
+static int finite3(const double *x)
+{
+    return isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2]);
+}
+
+fg_result fg_field_sample(const fg_field *f, const double *pts, size_t n, double *out)
+{
+    if (!f || (n > 0 && (!pts || !out)))
+        return FG_ERR_NULL;
+    for (size_t p = 0; p < n; p++)
+        if (!finite3(&pts[3 * p]))
+            return FG_ERR_NOT_FINITE;
+    const fg_level *L = &f->level[0];
+    size_t sy = (size_t)L->n[0], sz = sy * (size_t)L->n[1];
+    for (size_t p = 0; p < n; p++) {
+        int c[3];
+        double t[3];
+        for (int a = 0; a < 3; a++) {
+            double u = (pts[3 * p + a] - f->config.min_m[a]) / f->h[a];
+            double top = L->n[a] - 1;
+            u = u < 0.0 ? 0.0 : (u > top ? top : u);
+            c[a] = (int)u;
+            if (c[a] > L->n[a] - 2)
+                c[a] = L->n[a] - 2;
+            t[a] = u - c[a];
+        }
+        const double *v = &f->phi[fg_level_index(L, c[0], c[1], c[2])];
+        double x00 = v[0] + t[0] * (v[1] - v[0]);
+        double x10 = v[sy] + t[0] * (v[sy + 1] - v[sy]);
+        double x01 = v[sz] + t[0] * (v[sz + 1] - v[sz]);
+        double x11 = v[sz + sy] + t[0] * (v[sz + sy + 1] - v[sz + sy]);
+        double y0 = x00 + t[1] * (x10 - x00);
+        double y1 = x01 + t[1] * (x11 - x01);
+        out[p] = y0 + t[2] * (y1 - y0);
+    }
+    return FG_OK;
+}
+
+size_t fg_field_origin_sites(const fg_field *f, double *pts, size_t max)
+{
+    const fg_level *L = &f->level[0];
+    const int *n = L->n;
+    static const int d[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                                {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    size_t found = 0;
+    for (int k = 0; k < n[2]; k++)
+        for (int j = 0; j < n[1]; j++)
+            for (int i = 0; i < n[0]; i++) {
+                if (f->label[fg_level_index(L, i, j, k)] != FG_REGION_FREE)
+                    continue;
+                int next = 0;
+                for (int s = 0; s < 6 && !next; s++) {
+                    int a = i + d[s][0], b = j + d[s][1], c = k + d[s][2];
+                    next = a >= 0 && b >= 0 && c >= 0 && a < n[0] && b < n[1] && c < n[2] &&
+                           f->label[fg_level_index(L, a, b, c)] == FG_REGION_ORIGIN;
+                }
+                if (!next)
+                    continue;
+                if (found < max && pts) {
+                    pts[3 * found + 0] = f->config.min_m[0] + i * f->h[0];
+                    pts[3 * found + 1] = f->config.min_m[1] + j * f->h[1];
+                    pts[3 * found + 2] = f->config.min_m[2] + k * f->h[2];
+                }
+                found++;
+            }
+    return found;
+}
+
+static fg_result src_sample(void *ctx, const double *pts, size_t n, double *out)
+{
+    return fg_field_sample(ctx, pts, n, out);
+}
+
+static fg_result src_classify(void *ctx, const double *pts, size_t n, uint8_t *out)
+{
+    return fg_field_classify(ctx, pts, n, out);
+}
+
+static size_t src_origin_sites(void *ctx, double *pts, size_t max)
+{
+    return fg_field_origin_sites(ctx, pts, max);
+}
+
+void fg_field_source_init(fg_field *f, fg_field_source *out)
+{
+    double cell = f->h[0];
+    if (f->h[1] < cell)
+        cell = f->h[1];
+    if (f->h[2] < cell)
+        cell = f->h[2];
+    *out = (fg_field_source){f, src_sample, src_classify, src_origin_sites, cell};
+}
