@@ -263,4 +263,5 @@ void fg_field_labels_changed(fg_field *f)
 {
     f->masks_dirty = 1;
     f->b_norm = -1.0;
+    f->sites_valid = 0;
 }

@@ -35,6 +35,9 @@ struct fg_field {
     double b_norm;     /* ||residual|| with phi = 0 on free nodes; < 0 when stale */
     fg_shape shapes[FG_FIELD_MAX_SHAPES];
     size_t shape_count;
+    double *sites;     /* origin sites (xyz), valid while sites_valid */
+    size_t site_count;
+    int sites_valid;
 };
 
 static inline size_t fg_level_index(const fg_level *L, int i, int j, int k)

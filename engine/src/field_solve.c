@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "field_internal.h"
+#include "fp_env_internal.h"
 
 #define DEFAULT_TOLERANCE 1e-5
 #define DEFAULT_CG_ITERATIONS 200
@@ -131,8 +132,15 @@ fg_result fg_field_solve(fg_field *f, const fg_solve_config *config, fg_solve_re
     double tol = c.tolerance > 0.0 ? c.tolerance : DEFAULT_TOLERANCE;
     if (c.cold)
         zero_free(f);
+    /* Far from the electrodes corrections decay into denormals, which
+     * would slow the sweeps several-fold. */
+    fg_fp_env env = fg_fp_env_flush_denormals();
+    fg_result r;
     if (c.solver == FG_SOLVER_SOR)
-        return sor(f, tol, c.max_iterations ? c.max_iterations : DEFAULT_SOR_SWEEPS,
-                   c.sor_omega, report);
-    return mgpcg(f, tol, c.max_iterations ? c.max_iterations : DEFAULT_CG_ITERATIONS, report);
+        r = sor(f, tol, c.max_iterations ? c.max_iterations : DEFAULT_SOR_SWEEPS, c.sor_omega,
+                report);
+    else
+        r = mgpcg(f, tol, c.max_iterations ? c.max_iterations : DEFAULT_CG_ITERATIONS, report);
+    fg_fp_env_restore(env);
+    return r;
 }

@@ -2,6 +2,7 @@
  * sampling, and the field source a growth model reads. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "field_internal.h"
 
@@ -84,6 +85,7 @@ void fg_field_destroy(fg_field *f)
     free(f->p);
     free(f->q);
     free(f->label);
+    free(f->sites);
     free(f);
 }
 
@@ -145,34 +147,56 @@ fg_result fg_field_sample(const fg_field *f, const double *pts, size_t n, double
     return FG_OK;
 }
 
-size_t fg_field_origin_sites(const fg_field *f, double *pts, size_t max)
+/* The free face neighbours of ORIGIN nodes, found by one pass over the
+ * labels and kept until the labels change. */
+static fg_result find_origin_sites(fg_field *f)
 {
     const fg_level *L = &f->level[0];
     const int *n = L->n;
-    static const int d[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    size_t found = 0;
-    for (int k = 0; k < n[2]; k++)
-        for (int j = 0; j < n[1]; j++)
-            for (int i = 0; i < n[0]; i++) {
-                if (f->label[fg_level_index(L, i, j, k)] != FG_REGION_FREE)
-                    continue;
-                int next = 0;
-                for (int s = 0; s < 6 && !next; s++) {
-                    int a = i + d[s][0], b = j + d[s][1], c = k + d[s][2];
-                    next = a >= 0 && b >= 0 && c >= 0 && a < n[0] && b < n[1] && c < n[2] &&
-                           f->label[fg_level_index(L, a, b, c)] == FG_REGION_ORIGIN;
+    size_t sy = (size_t)n[0], sz = sy * (size_t)n[1], count = 0;
+    const uint8_t *lab = f->label;
+    for (int pass = 0; pass < 2; pass++) {
+        count = 0;
+        for (int k = 0; k < n[2]; k++)
+            for (int j = 0; j < n[1]; j++)
+                for (int i = 0; i < n[0]; i++) {
+                    size_t id = fg_level_index(L, i, j, k);
+                    if (lab[id] != FG_REGION_FREE)
+                        continue;
+                    if (!((i > 0 && lab[id - 1] == FG_REGION_ORIGIN) ||
+                          (i < n[0] - 1 && lab[id + 1] == FG_REGION_ORIGIN) ||
+                          (j > 0 && lab[id - sy] == FG_REGION_ORIGIN) ||
+                          (j < n[1] - 1 && lab[id + sy] == FG_REGION_ORIGIN) ||
+                          (k > 0 && lab[id - sz] == FG_REGION_ORIGIN) ||
+                          (k < n[2] - 1 && lab[id + sz] == FG_REGION_ORIGIN)))
+                        continue;
+                    if (pass == 1) {
+                        f->sites[3 * count + 0] = f->config.min_m[0] + i * f->h[0];
+                        f->sites[3 * count + 1] = f->config.min_m[1] + j * f->h[1];
+                        f->sites[3 * count + 2] = f->config.min_m[2] + k * f->h[2];
+                    }
+                    count++;
                 }
-                if (!next)
-                    continue;
-                if (found < max && pts) {
-                    pts[3 * found + 0] = f->config.min_m[0] + i * f->h[0];
-                    pts[3 * found + 1] = f->config.min_m[1] + j * f->h[1];
-                    pts[3 * found + 2] = f->config.min_m[2] + k * f->h[2];
-                }
-                found++;
-            }
-    return found;
+        if (pass == 0) {
+            free(f->sites);
+            f->sites = malloc((count ? count : 1) * 3 * sizeof(double));
+            if (!f->sites)
+                return FG_ERR_NO_MEMORY;
+        }
+    }
+    f->site_count = count;
+    f->sites_valid = 1;
+    return FG_OK;
+}
+
+size_t fg_field_origin_sites(fg_field *f, double *pts, size_t max)
+{
+    if (!f || (!f->sites_valid && find_origin_sites(f) != FG_OK))
+        return 0;
+    size_t n = f->site_count < max ? f->site_count : max;
+    if (pts)
+        memcpy(pts, f->sites, n * 3 * sizeof(double));
+    return f->site_count;
 }
 
 static fg_result src_sample(void *ctx, const double *pts, size_t n, double *out)

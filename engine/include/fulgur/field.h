@@ -162,9 +162,11 @@ FG_API FG_NODISCARD fg_result fg_field_classify(const fg_field *field, const dou
                                                 size_t n, uint8_t *out);
 
 /* The free nodes next to the origin (face neighbours of an ORIGIN node),
- * where a leader may start: writes up to max positions (xyz triples) and
- * returns how many there are in all. [sim-thread] */
-FG_API size_t fg_field_origin_sites(const fg_field *field, double *points_m, size_t max);
+ * where a leader may start: writes up to max positions (xyz triples; points
+ * may be NULL) and returns how many there are in all. The list is cached
+ * until the shapes change. [sim-thread]
+ * Returns 0 when field is NULL or the cache cannot be allocated. */
+FG_API size_t fg_field_origin_sites(fg_field *field, double *points_m, size_t max);
 
 /* What a growth model reads: phi and regions at arbitrary points, and where
  * it may start. A CPU fg_field provides one (fg_field_source_init); a GPU

@@ -7,5 +7,8 @@
 #include "fulgur/result.h"
 #include "fulgur/sound.h"
 #include "fulgur/tree.h"
+#include "fulgur/field.h"
+#include "fulgur/growth.h"
+#include "fulgur/discharge.h"
 
 #endif
