@@ -37,6 +37,15 @@ static inline int boundary_row(const fg_level *L, int j, int k)
     return j == 0 || k == 0 || j == L->n[1] - 1 || k == L->n[2] - 1;
 }
 
+static inline void residual_at(const fg_level *L, const double *x, const double *rhs,
+                               double *out, int i, int j, int k)
+{
+    size_t id = fg_level_index(L, i, j, k);
+    double d, o;
+    node_sums(L, x, i, j, k, &d, &o);
+    out[id] = L->mask[id] ? 0.0 : (rhs ? rhs[id] : 0.0) - (d * x[id] - o);
+}
+
 void fg_lap_residual(const fg_level *L, const double *x, const double *rhs, double *out)
 {
     const int *n = L->n;
@@ -44,23 +53,33 @@ void fg_lap_residual(const fg_level *L, const double *x, const double *rhs, doub
     double cx = L->c[0], cy = L->c[1], cz = L->c[2], dg = 2.0 * (cx + cy + cz);
     for (int k = 0; k < n[2]; k++)
         for (int j = 0; j < n[1]; j++) {
+            if (boundary_row(L, j, k)) {
+                for (int i = 0; i < n[0]; i++)
+                    residual_at(L, x, rhs, out, i, j, k);
+                continue;
+            }
+            residual_at(L, x, rhs, out, 0, j, k);
+            residual_at(L, x, rhs, out, n[0] - 1, j, k);
             size_t row = fg_level_index(L, 0, j, k);
-            int edge = boundary_row(L, j, k);
-            for (int i = 0; i < n[0]; i++) {
-                size_t id = row + (size_t)i;
-                if (L->mask[id]) {
-                    out[id] = 0.0;
-                    continue;
+            const double *xr = x + row;
+            const uint8_t *m = L->mask + row;
+            double *o = out + row;
+            /* Two copies of the loop so that neither tests rhs per node. */
+            if (rhs) {
+                const double *b = rhs + row;
+                for (int i = 1; i < n[0] - 1; i++) {
+                    double v = b[i] - (dg * xr[i] - cx * (xr[i - 1] + xr[i + 1]) -
+                                       cy * (xr[i - sy] + xr[i + sy]) -
+                                       cz * (xr[i - sz] + xr[i + sz]));
+                    o[i] = m[i] ? 0.0 : v;
                 }
-                double d, o;
-                if (edge || i == 0 || i == n[0] - 1) {
-                    node_sums(L, x, i, j, k, &d, &o);
-                } else {
-                    d = dg;
-                    o = cx * (x[id - 1] + x[id + 1]) + cy * (x[id - sy] + x[id + sy]) +
-                        cz * (x[id - sz] + x[id + sz]);
+            } else {
+                for (int i = 1; i < n[0] - 1; i++) {
+                    double v = -(dg * xr[i] - cx * (xr[i - 1] + xr[i + 1]) -
+                                 cy * (xr[i - sy] + xr[i + sy]) -
+                                 cz * (xr[i - sz] + xr[i + sz]));
+                    o[i] = m[i] ? 0.0 : v;
                 }
-                out[id] = (rhs ? rhs[id] : 0.0) - (d * x[id] - o);
             }
         }
 }
@@ -94,14 +113,24 @@ void fg_lap_sweep(const fg_level *L, double *x, const double *rhs, int color, do
                 relax(L, x, rhs, 0, j, k, omega);
             size_t row = fg_level_index(L, 0, j, k);
             int last = n[0] - 1;
-            for (int i = i0 == 0 ? 2 : 1; i < last; i += 2) {
-                size_t id = row + (size_t)i;
-                if (L->mask[id])
-                    continue;
-                double o = cx * (x[id - 1] + x[id + 1]) + cy * (x[id - sy] + x[id + sy]) +
-                           cz * (x[id - sz] + x[id + sz]);
-                double b = rhs ? rhs[id] : 0.0;
-                x[id] += inv * (b + o) - omega * x[id];
+            double *xr = x + row;
+            const uint8_t *m = L->mask + row;
+            /* Two copies of the loop so that neither tests rhs per node. */
+            if (rhs) {
+                const double *b = rhs + row;
+                for (int i = i0 == 0 ? 2 : 1; i < last; i += 2)
+                    if (!m[i])
+                        xr[i] += inv * (b[i] + cx * (xr[i - 1] + xr[i + 1]) +
+                                        cy * (xr[i - sy] + xr[i + sy]) +
+                                        cz * (xr[i - sz] + xr[i + sz])) -
+                                 omega * xr[i];
+            } else {
+                for (int i = i0 == 0 ? 2 : 1; i < last; i += 2)
+                    if (!m[i])
+                        xr[i] += inv * (cx * (xr[i - 1] + xr[i + 1]) +
+                                        cy * (xr[i - sy] + xr[i + sy]) +
+                                        cz * (xr[i - sz] + xr[i + sz])) -
+                                 omega * xr[i];
             }
             if (((last + j + k) & 1) == color)
                 relax(L, x, rhs, last, j, k, omega);

@@ -116,33 +116,58 @@ void fg_multigrid_update_masks(fg_field *f)
     f->masks_dirty = 0;
 }
 
+/* Full weighting at one coarse node from the fine nodes that exist. */
+static double restrict_edge(const fg_level *F, int I, int J, int K)
+{
+    int lo[3], hi[3];
+    span(I, F->n[0], &lo[0], &hi[0]);
+    span(J, F->n[1], &lo[1], &hi[1]);
+    span(K, F->n[2], &lo[2], &hi[2]);
+    double s = 0.0;
+    for (int k = lo[2]; k <= hi[2]; k++) {
+        double wk = k == 2 * K ? 1.0 : 0.5;
+        for (int j = lo[1]; j <= hi[1]; j++) {
+            double wjk = wk * (j == 2 * J ? 1.0 : 0.5);
+            const double *row = &F->tmp[fg_level_index(F, 0, j, k)];
+            for (int i = lo[0]; i <= hi[0]; i++)
+                s += wjk * (i == 2 * I ? 1.0 : 0.5) * row[i];
+        }
+    }
+    return s;
+}
+
 /* C->rhs = P^T F->tmp: weight 1/2 per axis offset, zero on masked nodes. */
 static void restrict_residual(const fg_level *F, fg_level *C)
 {
+    size_t sy = (size_t)F->n[0], sz = sy * (size_t)F->n[1];
     for (int K = 0; K < C->n[2]; K++)
-        for (int J = 0; J < C->n[1]; J++)
+        for (int J = 0; J < C->n[1]; J++) {
+            int edge = J == 0 || K == 0 || J == C->n[1] - 1 || K == C->n[2] - 1;
             for (int I = 0; I < C->n[0]; I++) {
                 size_t id = fg_level_index(C, I, J, K);
                 if (C->mask[id]) {
                     C->rhs[id] = 0.0;
                     continue;
                 }
-                int lo[3], hi[3];
-                span(I, F->n[0], &lo[0], &hi[0]);
-                span(J, F->n[1], &lo[1], &hi[1]);
-                span(K, F->n[2], &lo[2], &hi[2]);
-                double s = 0.0;
-                for (int k = lo[2]; k <= hi[2]; k++) {
-                    double wk = k == 2 * K ? 1.0 : 0.5;
-                    for (int j = lo[1]; j <= hi[1]; j++) {
-                        double wjk = wk * (j == 2 * J ? 1.0 : 0.5);
-                        const double *row = &F->tmp[fg_level_index(F, 0, j, k)];
-                        for (int i = lo[0]; i <= hi[0]; i++)
-                            s += wjk * (i == 2 * I ? 1.0 : 0.5) * row[i];
-                    }
+                if (edge || I == 0 || I == C->n[0] - 1) {
+                    C->rhs[id] = restrict_edge(F, I, J, K);
+                    continue;
                 }
-                C->rhs[id] = s;
+                /* Interior: the separable (1/2, 1, 1/2)^3 stencil. */
+                const double *c = &F->tmp[fg_level_index(F, 2 * I, 2 * J, 2 * K)];
+                double plane[3];
+                for (int dk = -1; dk <= 1; dk++) {
+                    const double *p = c + dk * (ptrdiff_t)sz;
+                    double rows[3];
+                    for (int dj = -1; dj <= 1; dj++) {
+                        const double *r = p + dj * (ptrdiff_t)sy;
+                        rows[dj + 1] = 0.5 * (r[-1] + r[1]) + r[0];
+                    }
+                    plane[dk + 1] = 0.5 * (rows[0] + rows[2]) + rows[1];
+                }
+                C->rhs[id] = 0.5 * (plane[0] + plane[2]) + plane[1];
             }
+        }
 }
 
 /* F->e += P C->e on free fine nodes (trilinear). */
