@@ -11,7 +11,6 @@
 #include "fulgur/field.h"
 
 #define FG_FIELD_MAX_LEVELS 8
-#define FG_FIELD_MAX_SHAPES 64
 
 typedef struct fg_level {
     int n[3];

@@ -33,6 +33,7 @@
 #define FG_FIELD_MIN_SIZE 9
 #define FG_FIELD_MAX_SIZE 257
 #define FG_FIELD_DEFAULT_SIZE 65
+#define FG_FIELD_MAX_SHAPES 64
 /* The default refusal limit: a 257^3 grid needs about 0.76 GiB. */
 #define FG_FIELD_DEFAULT_MAX_BYTES ((size_t)1 << 30)
 
@@ -93,14 +94,14 @@ typedef struct fg_shape {
                             region (e.g. the glass of a plasma ball) */
 } fg_shape;
 
-/* Replaces the field's shapes with shapes[0..count) (copied): at least one
- * ORIGIN and one TARGET. Dirichlet nodes get their normalised value; free
+/* Replaces the field's shapes with shapes[0..count) (copied; count at most
+ * FG_FIELD_MAX_SHAPES): at least one ORIGIN and one TARGET. Dirichlet nodes get their normalised value; free
  * nodes keep their phi, so the next solve starts warm. A sphere smaller than
  * the cell covers the node nearest its centre. On error, *bad_shape (if not
  * NULL) is the index of the offending shape (count if the set as a whole is
  * wrong) and the field is unchanged. [sim-thread]
  * Errors: FG_ERR_NULL field, or shapes with count > 0; FG_ERR_NOT_FINITE a
- * coordinate or potential; FG_ERR_ARGUMENT an unknown kind or role, a
+ * coordinate or potential; FG_ERR_ARGUMENT too many shapes, an unknown kind or role, a
  * radius <= 0, a box with max < min, a zero plane normal, a shape that
  * covers no node of the grid (e.g. lies outside it), no origin or no
  * target, origin (or target) voltages that disagree, or Vo == Vt. */
