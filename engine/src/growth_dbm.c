@@ -158,13 +158,15 @@ static fg_result update_field(dbm *d, int step, double *last_residual, fg_growth
     fg_result r = fg_field_solve(d->f, &sc, &sr);
     rep->solves++;
     rep->solver_iterations += sr.iterations;
-    if (r == FG_ERR_NOT_CONVERGED && sr.residual > *last_residual) {
+    /* The cheap cycles are falling behind the growing channel: catch up. */
+    int grew = r == FG_ERR_NOT_CONVERGED && sr.residual > *last_residual;
+    *last_residual = sr.residual;
+    if (grew) {
         fg_solve_config full = {0};
         r = fg_field_solve(d->f, &full, &sr);
         rep->solves++;
         rep->solver_iterations += sr.iterations;
     }
-    *last_residual = sr.residual;
     return r == FG_ERR_NOT_CONVERGED ? FG_OK : r;
 }
 
