@@ -1,6 +1,6 @@
 /* The field: Laplace solutions against closed forms, the convergence order
  * when h is halved, MGPCG against SOR, convergence with a thin Dirichlet
- * tree inside, warm starts, sampling, classification, and bad input. */
+ * tree inside (where plain V-cycles diverge), warm starts, sampling, classification, and bad input. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -10,6 +10,7 @@
 
 #include <cmocka.h>
 
+#include "field_internal.h"
 #include "fulgur/field.h"
 
 static fg_field *make(int n, double lo, double hi)
@@ -108,7 +109,7 @@ static void mgpcg_agrees_with_sor(void **state)
     assert_int_equal(fg_field_solve(b, &cb, &rb), FG_OK);
     print_message("33^3 spheres: MGPCG %d iterations, SOR %d sweeps\n", ra.iterations,
                   rb.iterations);
-    assert_true(ra.iterations < 20);
+    assert_true(ra.iterations <= 10);
     assert_true(rb.iterations > 5 * ra.iterations);
     double worst = 0.0;
     for (int i = 0; i < 500; i++) {
@@ -158,13 +159,36 @@ static void converges_with_thin_tree(void **state)
     assert_int_equal(fg_field_solve(f, &c, &rep), FG_OK);
     print_message("thin tree 65^3: %d iterations to %.2e\n", rep.iterations, rep.residual);
     assert_true(rep.residual <= 1e-8);
-    assert_true(rep.iterations <= 40);
+    assert_true(rep.iterations <= 20);
     /* The tree holds 0, the field rises to 1 at the top. */
     double p[6] = {31.0 / 64.0, 0.5, 0.5, 0.5, 0.5, 0.9};
     double v[2];
     assert_int_equal(fg_field_sample(f, p, 2, v), FG_OK);
     assert_float_equal(v[0], 0.0, 1e-12);
     assert_true(v[1] > 0.6 && v[1] < 1.0);
+    fg_field_destroy(f);
+}
+
+/* The same V-cycle used as a stationary iteration (phi += M r) diverges on
+ * the thin tree: the reason the solver is MGPCG. */
+static void plain_vcycles_diverge_on_thin_tree(void **state)
+{
+    (void)state;
+    fg_field *f = make(65, 0.0, 1.0);
+    fg_shape s[16];
+    size_t n = thin_tree(s, 31.0 / 64.0);
+    assert_int_equal(fg_field_set_shapes(f, s, n, NULL), FG_OK);
+    const fg_level *L = &f->level[0];
+    double b = fg_field_b_norm(f), res = 1.0;
+    for (int it = 0; it < 12; it++) {
+        fg_lap_residual(L, f->phi, NULL, f->r);
+        res = sqrt(fg_dot(f->r, f->r, L->count)) / b;
+        fg_multigrid_precondition(f);
+        for (size_t i = 0; i < L->count; i++)
+            f->phi[i] += f->z[i];
+    }
+    print_message("thin tree 65^3: plain V-cycles, relative residual %.1e after 11\n", res);
+    assert_true(res > 1e3);
     fg_field_destroy(f);
 }
 
@@ -315,6 +339,7 @@ int main(void)
         cmocka_unit_test(concentric_spheres_order),
         cmocka_unit_test(mgpcg_agrees_with_sor),
         cmocka_unit_test(converges_with_thin_tree),
+        cmocka_unit_test(plain_vcycles_diverge_on_thin_tree),
         cmocka_unit_test(warm_start_is_cheaper),
         cmocka_unit_test(voltages_normalise),
         cmocka_unit_test(bad_grids),
