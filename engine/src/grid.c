@@ -1,5 +1,6 @@
 /* The field's grid: creation with the memory check, geometry, trilinear
  * sampling, and the field source a growth model reads. */
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -91,11 +92,13 @@ void fg_field_destroy(fg_field *f)
 
 void fg_field_get_config(const fg_field *f, fg_grid_config *out)
 {
+    assert(f && out);
     *out = f->config;
 }
 
 void fg_field_cell(const fg_field *f, double out_m[3])
 {
+    assert(f && out_m);
     for (int a = 0; a < 3; a++)
         out_m[a] = f->h[a];
 }
@@ -216,6 +219,7 @@ static size_t src_origin_sites(void *ctx, double *pts, size_t max)
 
 void fg_field_source_init(fg_field *f, fg_field_source *out)
 {
+    assert(f && out);
     double cell = f->h[0];
     if (f->h[1] < cell)
         cell = f->h[1];

@@ -61,7 +61,8 @@ FG_API FG_NODISCARD fg_result fg_field_create(const fg_grid_config *config, fg_f
 /* Frees the field; NULL is a no-op. [sim-thread] */
 FG_API void fg_field_destroy(fg_field *field);
 
-/* The configuration actually used (defaults filled in). [sim-thread] */
+/* The configuration actually used (defaults filled in). NULL arguments are
+ * programmer errors (an assert in debug builds). [sim-thread] */
 FG_API void fg_field_get_config(const fg_field *field, fg_grid_config *out);
 
 /* The node spacing on each axis, metres. [sim-thread] */
