@@ -114,6 +114,42 @@ static void plasma_filaments_all_connect(void **state)
     scene_deinit(&s);
 }
 
+/* A fixed plate between the plates: leaders must go round it, and no
+ * node of any tree may lie in it. */
+static void trees_avoid_an_obstacle(void **state)
+{
+    (void)state;
+    fg_grid_config c = {.size = {33, 33, 33}, .max_m = {1, 1, 1}};
+    fg_field *f;
+    assert_int_equal(fg_field_create(&c, &f), FG_OK);
+    fg_shape s[3] = {
+        {.kind = FG_SHAPE_GROUND, .role = FG_ROLE_ORIGIN},
+        {.kind = FG_SHAPE_PLANE, .role = FG_ROLE_TARGET, .centre_m = {0, 0, 1}, .normal = {0, 0, -1}},
+        {.kind = FG_SHAPE_BOX, .role = FG_ROLE_FIXED, .potential = 0.4,
+         .box_min_m = {0.2, 0.2, 0.4}, .box_max_m = {0.8, 0.8, 0.5}},
+    };
+    assert_int_equal(fg_field_set_shapes(f, s, 3, NULL), FG_OK);
+    assert_int_equal(fg_field_solve(f, NULL, NULL), FG_OK);
+    fg_field_source src;
+    fg_field_source_init(f, &src);
+    fg_tree *t;
+    assert_int_equal(fg_tree_create(8, &t), FG_OK);
+    int beside = 0;
+    for (uint64_t seed = 1; seed <= 10; seed++) {
+        fg_growth_config g = {.step_m = 0.04, .seed = seed};
+        assert_int_equal(fg_grow_matsuyama(&src, &g, t, NULL), FG_OK);
+        check_tree(f, t, g.step_m, 0);
+        /* Where the main channel crosses the obstacle's height, it is beside it. */
+        const fg_node *v = fg_tree_nodes(t);
+        for (size_t i = 0; i < fg_tree_count(t); i++)
+            if ((v[i].flags & FG_NODE_MAIN) && v[i].z > 0.4 && v[i].z < 0.5)
+                beside += v[i].x < 0.2 || v[i].x > 0.8 || v[i].y < 0.2 || v[i].y > 0.8;
+    }
+    assert_true(beside >= 10);
+    fg_tree_destroy(t);
+    fg_field_destroy(f);
+}
+
 static void same_seed_same_tree(void **state)
 {
     (void)state;
@@ -411,6 +447,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(spark_reaches_target),
         cmocka_unit_test(plasma_filaments_all_connect),
+        cmocka_unit_test(trees_avoid_an_obstacle),
         cmocka_unit_test(same_seed_same_tree),
         cmocka_unit_test(eq2_probabilities_chi_square),
         cmocka_unit_test(analytic_source),
