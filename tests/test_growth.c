@@ -345,6 +345,35 @@ static void dbm_grows_and_restores(void **state)
     scene_deinit(&s);
 }
 
+/* eta sharpens the choice: a high exponent grows a nearly straight
+ * channel, a low one a bushy cluster (NPW's fractal dimension falls with
+ * eta). */
+static void dbm_eta_shapes_the_channel(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s, FG_PRESET_SPARK_BALLS, 17);
+    double cell[3];
+    fg_field_cell(s.field, cell);
+    int steps[2] = {0, 0};
+    const double eta[2] = {0.5, 4.0};
+    for (int e = 0; e < 2; e++)
+        for (uint64_t seed = 1; seed <= 4; seed++) {
+            fg_growth_config g = s.setup.growth;
+            g.step_m = 2.0 * cell[0];
+            g.eta = eta[e];
+            g.seed = seed;
+            fg_growth_report rep;
+            assert_int_equal(fg_field_solve(s.field, NULL, NULL), FG_OK);
+            assert_int_equal(fg_grow_dbm(s.field, &g, s.tree, &rep), FG_OK);
+            check_tree(s.field, s.tree, g.step_m, 1);
+            steps[e] += rep.steps;
+        }
+    print_message("DBM lattice steps over 4 seeds: eta 0.5: %d, eta 4: %d\n", steps[0], steps[1]);
+    assert_true(steps[0] > 3 * steps[1]);
+    scene_deinit(&s);
+}
+
 static double mean_segments(fg_preset preset)
 {
     scene s;
@@ -452,6 +481,7 @@ int main(void)
         cmocka_unit_test(eq2_probabilities_chi_square),
         cmocka_unit_test(analytic_source),
         cmocka_unit_test(dbm_grows_and_restores),
+        cmocka_unit_test(dbm_eta_shapes_the_channel),
         cmocka_unit_test(presets_match_table_2),
         cmocka_unit_test(enclosed_origin_is_unreachable),
         cmocka_unit_test(bad_growth_input),
