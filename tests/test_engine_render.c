@@ -77,8 +77,7 @@ static void add_segment(const scene *s, int i, const double e[3], double first, 
     wm_shape w = wm_shape_at(&s->sound, s->sound.t0_s, r, sn, len / 2, C, NULL);
     double emit = s->emit_s + 0.5 * (to_strike(s, i) + to_strike(s, s->nodes[i].parent)) /
                                   s->sound.return_stroke_speed_m_s;
-    double reff = r > s->sound.r0_m ? r : s->sound.r0_m;
-    wm_event ev = {w, (emit + reff / C) * FS - first, FS * (len / 2) / C};
+    wm_event ev = {w, (emit + r / C) * FS - first, FS * (len / 2) / C};
     wm_add_direct(&ev, out, n);
 }
 

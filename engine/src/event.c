@@ -15,6 +15,6 @@ void fg_event_geometry(const fg_engine *e, const fg_sound_params *p, fg_event *e
         s = 1.0;
     double c = e->cfg.speed_of_sound_m_s;
     ev->shape[k] = wm_shape_at(p, ev->t0_s, r, s, ev->half_len_m, c, NULL);
-    double r_eff = r > p->r0_m ? r : p->r0_m;
-    ev->center_s[k] = ev->emit_s + r_eff / c;
+    /* eqs. 3-4 clamp r to r0; the wave still travels the true distance */
+    ev->center_s[k] = ev->emit_s + r / c;
 }

@@ -1,7 +1,8 @@
 /* The listener pose as a latest-value cell (a sequence lock).
  *
  * Writers serialise among themselves on the sequence word (odd while a
- * write is in progress). The audio thread makes one attempt per block and
+ * write is in progress): a writer preempted mid-write makes other writers
+ * and retrying readers wait, never the audio thread. The audio thread makes one attempt per block and
  * keeps the pose it had if a write is in progress: wait-free. Other readers
  * retry. The payload is stored as relaxed atomics so no read is a data race.
  * The even sequence value also serves as the pose's serial number. */

@@ -9,7 +9,7 @@ const char *fg_result_str(fg_result r)
     case FG_ERR_SAMPLE_RATE: return "sample rate outside 8000-384000 Hz";
     case FG_ERR_NOT_FINITE: return "value is not a finite number";
     case FG_ERR_TREE: return "discharge tree is invalid";
-    case FG_ERR_CAPACITY: return "larger than the engine's capacity";
+    case FG_ERR_CAPACITY: return "larger than the configured capacity";
     case FG_ERR_POOL_FULL: return "voice pool is full";
     case FG_ERR_QUEUE_FULL: return "queue to the audio thread is full";
     case FG_ERR_BLOCK_SIZE: return "block larger than the configured maximum";

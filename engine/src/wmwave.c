@@ -109,6 +109,36 @@ void wm_block_begin(wm_block *b, double *d3, size_t n)
     memset(d3, 0, n * sizeof *d3);
 }
 
+/* Which quadratic piece of p holds tau: 0 before the wave, 1 the rising
+ * shell, 2 the middle, 3 the falling shell, 4 after. */
+static int piece(const wm_shape *w, double tau)
+{
+    double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    return tau <= -outer ? 0 : tau <= -inner ? 1 : tau <= inner ? 2 : tau <= outer ? 3 : 4;
+}
+
+/* The average over sample k, accurate to rounding of the peak. A difference
+ * of P at the two edges loses digits when the wave spans many samples (P is
+ * ~ psi times the peak, the difference ~ 1/width of it), and the block
+ * accumulator extrapolates those errors quadratically across the block. So
+ * inside one piece the average of the quadratic is taken directly:
+ * p(mid) + p'' h^2 / 24, h = 1/width; across a breakpoint, the P difference
+ * (that sample's error is not extrapolated: the samples after it are). */
+static double sample_average(const wm_event *e, long k)
+{
+    const wm_shape *w = &e->shape;
+    double a = ((double)k - 0.5 - e->center) / e->width;
+    double z = ((double)k + 0.5 - e->center) / e->width;
+    int pa = piece(w, a);
+    if (pa != piece(w, z))
+        return e->width * (wm_integral(w, z) - wm_integral(w, a));
+    if (pa == 0 || pa == 4)
+        return 0.0;
+    double h = z - a;
+    double curvature = pa == 1 ? -2.0 * w->b / w->s : pa == 3 ? 2.0 * w->b / w->s : 0.0;
+    return wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
+}
+
 /* Samples lo..hi (lo >= -3) evaluated exactly: state for k < 0, third
  * differences for k >= lo + 3 (earlier ones in the range lie on one
  * quadratic piece and have none). */
@@ -117,11 +147,8 @@ static void add_range(wm_block *b, const wm_event *e, long lo, long hi)
     /* a merged range is at most the state (3) plus 4 breakpoints (7 each) */
     enum { MAX_RANGE = 32 };
     double y[MAX_RANGE];
-    double left = edge_integral(e, lo);
     for (long k = lo; k <= hi; k++) {
-        double right = edge_integral(e, k + 1);
-        y[k - lo] = e->width * (right - left);
-        left = right;
+        y[k - lo] = sample_average(e, k);
         if (k < 0)
             b->state[-1 - k] += y[k - lo];
         else if (k >= lo + 3)

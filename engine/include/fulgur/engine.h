@@ -72,7 +72,7 @@ typedef struct fg_engine_stats {
     uint64_t late_events;       /* events that began before the block that could first play them */
     uint64_t late_samples;      /* per ear, the samples those events lost */
     uint64_t skipped_repeats;   /* continuous repeats dropped for lack of instance slots */
-    uint64_t blocks;            /* render calls that produced sound */
+    uint64_t blocks;            /* successful render calls of one frame or more */
     uint64_t blocks_over_budget;/* render calls that took longer than their frames last */
 } fg_engine_stats;
 
@@ -138,13 +138,17 @@ FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *
                                                uint32_t nframes);
 
 /* Publishes the listener pose; the audio thread reads the latest at each
- * block. The pose is copied. [any-thread] Several writers are serialised
- * among themselves by a short spin; the audio thread never waits.
+ * block. The pose is copied. [any-thread] but not the audio thread: meant
+ * for one writer (the frame thread). Overlapping calls from several threads
+ * stay correct, but each waits while another is writing, so it is not
+ * lock-free among writers. Render never waits: if a write is in progress it
+ * keeps the previous pose for that block.
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT zero-length or
  * parallel forward/up. */
 FG_API FG_NODISCARD fg_result fg_engine_set_listener(fg_engine *engine, const fg_listener *pose);
 
-/* Copies the latest published pose into *out. [any-thread] */
+/* Copies the latest published pose into *out; waits while a write is in
+ * progress. [any-thread] but not the audio thread. */
 FG_API void fg_engine_get_listener(const fg_engine *engine, fg_listener *out);
 
 /* A snapshot of the counters. [any-thread] */

@@ -3,12 +3,14 @@
 #define FULGUR_FULGUR_H
 
 #include "fulgur/defs.h"
+#include "fulgur/charges.h"
+#include "fulgur/discharge.h"
 #include "fulgur/engine.h"
+#include "fulgur/field.h"
+#include "fulgur/growth.h"
+#include "fulgur/lightning.h"
 #include "fulgur/result.h"
 #include "fulgur/sound.h"
 #include "fulgur/tree.h"
-#include "fulgur/field.h"
-#include "fulgur/growth.h"
-#include "fulgur/discharge.h"
 
 #endif

@@ -11,7 +11,7 @@ typedef enum fg_result {
     FG_ERR_SAMPLE_RATE = -3,   /* sample rate outside 8 kHz – 384 kHz */
     FG_ERR_NOT_FINITE = -4,    /* a NaN or infinite value where a number was due */
     FG_ERR_TREE = -5,          /* a discharge tree breaks its rules (see fg_tree_check) */
-    FG_ERR_CAPACITY = -6,      /* larger than the engine was created to hold, ever */
+    FG_ERR_CAPACITY = -6,      /* larger than the engine or generator was configured to hold */
     FG_ERR_POOL_FULL = -7,     /* no free voice or segment storage now; collect and retry */
     FG_ERR_QUEUE_FULL = -8,    /* the ring to the audio thread is full; retry later */
     FG_ERR_BLOCK_SIZE = -9,    /* nframes larger than the configured maximum block */

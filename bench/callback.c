@@ -1,0 +1,213 @@
+/* The real-time callback's cost: the distribution of fg_engine_render
+ * times at 48 kHz while many bolts and a spark stream sound at once, the
+ * number of concurrent bolts before the 99th percentile passes half the
+ * block's budget, and the worst block: a thunderclap whose every segment
+ * arrives at once. Writes bench/results/callback.csv, stress.csv and
+ * worst_block.csv. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_util.h"
+#include "fulgur/fulgur.h"
+#include "synth_tree.h"
+
+#define FS 48000.0
+#define BOLT_SEGMENTS 10000
+#define SPARK_SEGMENTS 72
+#define SPARKS_PER_S 100.0
+/* every bolt below sounds throughout this window of its audio */
+#define WINDOW_START_S 9.0
+#define WINDOW_END_S 15.0
+
+typedef struct load {
+    int bolts;
+    int sparks;   /* non-zero: the 100/s spark stream */
+    unsigned block;
+} load;
+
+typedef struct timing {
+    double p50, p99, max; /* microseconds */
+    double budget_us;
+    unsigned long blocks, late_events;
+} timing;
+
+static void die(const char *what, fg_result r)
+{
+    fprintf(stderr, "%s: %s\n", what, fg_result_str(r));
+    exit(1);
+}
+
+/* Bolt k: the fixture tree moved to 2-3 km around the listener. */
+static void make_bolt(fg_node *nodes, int k)
+{
+    synth_tree(nodes, BOLT_SEGMENTS, 5000.0, 3.0, (uint64_t)k + 11);
+    double a = 2.399963 * k, d = 2000.0 + 1000.0 * fmod(0.618034 * k, 1.0);
+    for (size_t i = 0; i <= BOLT_SEGMENTS; i++) {
+        nodes[i].x += d * cos(a);
+        nodes[i].y += d * sin(a);
+    }
+}
+
+static void make_spark(fg_node *nodes, int k)
+{
+    synth_tree(nodes, SPARK_SEGMENTS, 0.02, 0.002, (uint64_t)k + 1000);
+    double a = 1.3 * k;
+    for (size_t i = 0; i <= SPARK_SEGMENTS; i++) {
+        nodes[i].x += 1.5 * cos(a);
+        nodes[i].y += 1.5 * sin(a);
+        nodes[i].z += 1.0;
+    }
+}
+
+static timing run(const load *L, fg_node *tree)
+{
+    fg_engine_config cfg = {.sample_rate_hz = FS, .max_block_frames = L->block,
+                            .max_voices = (uint32_t)L->bolts + 64,
+                            .segment_capacity = (uint32_t)(L->bolts * BOLT_SEGMENTS + 64 * SPARK_SEGMENTS)};
+    fg_engine *e;
+    fg_result r = fg_engine_create(&cfg, &e);
+    if (r != FG_OK)
+        die("create", r);
+    fg_listener head = {.position = {0, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
+    if ((r = fg_engine_set_listener(e, &head)) != FG_OK)
+        die("listener", r);
+    fg_sound_params bolt, spark;
+    if (fg_preset_sound(FG_PRESET_LIGHTNING, &bolt) != FG_OK ||
+        fg_preset_sound(FG_PRESET_SPARK_BALLS, &spark) != FG_OK)
+        exit(1);
+    for (int k = 0; k < L->bolts; k++) {
+        make_bolt(tree, k);
+        fg_discharge d = {.nodes = tree, .node_count = BOLT_SEGMENTS + 1, .sound = bolt,
+                          .emit_time_s = 0, .strokes = 1, .seed = (uint64_t)k};
+        if ((r = fg_engine_post(e, &d, NULL)) != FG_OK)
+            die("post bolt", r);
+    }
+    float *planes[2] = {malloc(L->block * sizeof(float)), malloc(L->block * sizeof(float))};
+    size_t cap = (size_t)((WINDOW_END_S - WINDOW_START_S) * FS / L->block) + 2, n = 0;
+    double *us = malloc(cap * sizeof *us);
+    int next_spark = 0;
+    for (uint64_t frame = 0; frame < (uint64_t)(WINDOW_END_S * FS); frame += L->block) {
+        double t = frame / FS;
+        while (L->sparks && t >= WINDOW_START_S - 0.1 && next_spark / SPARKS_PER_S <= t - WINDOW_START_S + 0.1) {
+            make_spark(tree, next_spark);
+            fg_discharge d = {.nodes = tree, .node_count = SPARK_SEGMENTS + 1, .sound = spark,
+                              .emit_time_s = FG_EMIT_NOW, .strokes = 1, .seed = (uint64_t)next_spark};
+            if ((r = fg_engine_post(e, &d, NULL)) != FG_OK)
+                die("post spark", r);
+            next_spark++;
+        }
+        double t0 = bench_now_s();
+        if ((r = fg_engine_render(e, planes, L->block)) != FG_OK)
+            die("render", r);
+        double dt = bench_now_s() - t0;
+        if (t >= WINDOW_START_S && n < cap)
+            us[n++] = 1e6 * dt;
+        fg_engine_collect(e);
+    }
+    fg_engine_stats st;
+    fg_engine_get_stats(e, &st);
+    timing out = {.p50 = bench_quantile(us, n, 0.5), .p99 = bench_quantile(us, n, 0.99),
+                  .max = bench_quantile(us, n, 1.0), .budget_us = 1e6 * L->block / FS,
+                  .blocks = n, .late_events = st.late_events};
+    free(us);
+    free(planes[0]);
+    free(planes[1]);
+    fg_engine_destroy(e);
+    return out;
+}
+
+/* All segments of an arc centred on the listener arrive in one block. */
+static double worst_block(unsigned block, fg_node *tree)
+{
+    double radius = 2000.0, step = 3.0;
+    for (size_t i = 0; i <= BOLT_SEGMENTS; i++) {
+        double a = step * (double)i / radius;
+        tree[i] = (fg_node){radius * cos(a), radius * sin(a), 500.0, (int32_t)i - 1, 0};
+    }
+    fg_engine_config cfg = {.sample_rate_hz = FS, .max_block_frames = block,
+                            .segment_capacity = BOLT_SEGMENTS};
+    fg_engine *e;
+    if (fg_engine_create(&cfg, &e) != FG_OK)
+        exit(1);
+    fg_listener head = {.position = {0, 0, 500.0}, .forward = {1, 0, 0}, .up = {0, 0, 1}};
+    fg_sound_params p;
+    if (fg_engine_set_listener(e, &head) != FG_OK || fg_preset_sound(FG_PRESET_LIGHTNING, &p) != FG_OK)
+        exit(1);
+    p.return_stroke_speed_m_s = 1e12; /* the whole arc emits at once */
+    fg_discharge d = {.nodes = tree, .node_count = BOLT_SEGMENTS + 1, .sound = p, .strokes = 1};
+    if (fg_engine_post(e, &d, NULL) != FG_OK)
+        exit(1);
+    float *planes[2] = {malloc(block * sizeof(float)), malloc(block * sizeof(float))};
+    double worst = 0;
+    fg_engine_stats st = {0};
+    while (st.finished == 0) {
+        double t0 = bench_now_s();
+        if (fg_engine_render(e, planes, block) != FG_OK)
+            exit(1);
+        worst = fmax(worst, bench_now_s() - t0);
+        fg_engine_get_stats(e, &st);
+    }
+    free(planes[0]);
+    free(planes[1]);
+    fg_engine_destroy(e);
+    return 1e6 * worst;
+}
+
+int main(int argc, char **argv)
+{
+    int max_stress = argc > 1 ? atoi(argv[1]) : 400;
+    char cpu[256];
+    bench_machine(cpu, sizeof cpu);
+    fg_node *tree = malloc((BOLT_SEGMENTS + 1) * sizeof *tree);
+
+    FILE *csv = bench_open_result("callback.csv");
+    fprintf(csv, "# %s; 48 kHz, 2 ears; %d-segment bolts at 2-3 km; render times over %.0f-%.0f s\n",
+            cpu, BOLT_SEGMENTS, WINDOW_START_S, WINDOW_END_S);
+    fprintf(csv, "block,bolts,sparks_per_s,p50_us,p99_us,max_us,budget_us,p99_of_budget,late_events\n");
+    static const unsigned blocks[] = {64, 128, 256};
+    static const int bolts[] = {1, 10, 100};
+    for (size_t b = 0; b < 3; b++) {
+        for (size_t k = 0; k < 3; k++) {
+            load L = {.bolts = bolts[k], .sparks = 1, .block = blocks[b]};
+            timing t = run(&L, tree);
+            fprintf(csv, "%u,%d,%.0f,%.2f,%.2f,%.2f,%.1f,%.4f,%lu\n", L.block, L.bolts, SPARKS_PER_S,
+                    t.p50, t.p99, t.max, t.budget_us, t.p99 / t.budget_us, t.late_events);
+            printf("block %3u, %3d bolts + sparks: p50 %7.1f us, p99 %7.1f us, max %7.1f us "
+                   "(budget %6.0f us, p99 = %4.1f %%)\n",
+                   L.block, L.bolts, t.p50, t.p99, t.max, t.budget_us, 100 * t.p99 / t.budget_us);
+        }
+    }
+    fclose(csv);
+
+    FILE *stress = bench_open_result("stress.csv");
+    fprintf(stress, "# %s; 128-frame blocks at 48 kHz; bolts of %d segments\n", cpu, BOLT_SEGMENTS);
+    fprintf(stress, "bolts,p99_us,p99_of_budget\n");
+    int limit = 0;
+    for (int n = 25; n <= max_stress; n *= 2) {
+        load L = {.bolts = n, .sparks = 0, .block = 128};
+        timing t = run(&L, tree);
+        fprintf(stress, "%d,%.2f,%.4f\n", n, t.p99, t.p99 / t.budget_us);
+        printf("stress: %4d bolts, p99 %7.1f us = %5.1f %% of budget\n", n, t.p99,
+               100 * t.p99 / t.budget_us);
+        if (t.p99 > 0.5 * t.budget_us)
+            break;
+        limit = n;
+    }
+    fprintf(stress, "# largest count tried with p99 under half the budget: %d\n", limit);
+    fclose(stress);
+
+    FILE *worst = bench_open_result("worst_block.csv");
+    fprintf(worst, "# %s; a %d-segment arc centred on the listener: all arrive in one block\n",
+            cpu, BOLT_SEGMENTS);
+    fprintf(worst, "block,worst_us,budget_us\n");
+    for (size_t b = 0; b < 3; b++) {
+        double w = worst_block(blocks[b], tree);
+        fprintf(worst, "%u,%.1f,%.1f\n", blocks[b], w, 1e6 * blocks[b] / FS);
+        printf("worst block (%u frames): %.1f us of %.0f us\n", blocks[b], w, 1e6 * blocks[b] / FS);
+    }
+    fclose(worst);
+    free(tree);
+    return 0;
+}

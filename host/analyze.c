@@ -1,0 +1,132 @@
+/* fulgur analyze: a WAV's level figures, and its waveform envelope and
+ * spectrogram as gnuplot-ready text (scripts/plot.gp draws them). */
+#include <math.h>
+#include <sndfile.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "commands.h"
+#include "envelope.h"
+#include "spectrogram.h"
+#include "temp_file.h"
+
+#define ENVELOPE_POINTS 2000
+#define P_REF_PA 20e-6
+
+static const char usage[] =
+    "usage: fulgur analyze IN.wav [--waveform W.dat] [--spectrogram S.dat]\n"
+    "Prints the peak and RMS pressure. --waveform writes a min/max envelope\n"
+    "(time_s, then min and max in Pa per channel); --spectrogram writes\n"
+    "\"time_s freq_hz level_db\" (dB re 20 uPa, 1/24-octave bands, channel 0), one block\n"
+    "per time slice. Exit: 0 done, 1 runtime error, 2 bad arguments or unreadable input.\n";
+
+typedef struct audio {
+    float *samples; /* interleaved */
+    size_t frames;
+    int channels;
+    double rate_hz;
+} audio;
+
+static int read_wav(const char *path, audio *a)
+{
+    SF_INFO info = {0};
+    SNDFILE *f = sf_open(path, SFM_READ, &info);
+    if (!f) {
+        fprintf(stderr, "fulgur: %s: %s\n", path, sf_strerror(NULL));
+        return -1;
+    }
+    a->frames = (size_t)info.frames;
+    a->channels = info.channels;
+    a->rate_hz = info.samplerate;
+    a->samples = malloc((a->frames ? a->frames : 1) * (size_t)a->channels * sizeof(float));
+    int ok = a->samples && sf_readf_float(f, a->samples, info.frames) == info.frames;
+    sf_close(f);
+    if (!ok) {
+        fprintf(stderr, "fulgur: %s: cannot read %zu frames\n", path, a->frames);
+        free(a->samples);
+        return -1;
+    }
+    return 0;
+}
+
+typedef int (*writer)(FILE *out, const audio *a);
+
+static int write_envelope(FILE *out, const audio *a)
+{
+    return envelope_write(out, a->samples, a->frames, a->channels, a->rate_hz, ENVELOPE_POINTS);
+}
+
+static int write_spectrogram(FILE *out, const audio *a)
+{
+    return spectrogram_write(out, a->samples, a->frames, a->channels, 0, a->rate_hz);
+}
+
+static int write_output(const char *path, writer write, const audio *a)
+{
+    char err[512];
+    temp_file t;
+    if (temp_file_open(&t, path, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return -1;
+    }
+    FILE *out = temp_file_stream(&t);
+    if (!out || write(out, a) != 0) {
+        fprintf(stderr, "fulgur: %s: cannot write\n", path);
+        temp_file_abort(&t);
+        return -1;
+    }
+    if (temp_file_commit(&t, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+static void print_levels(const char *path, const audio *a)
+{
+    double peak = 0, sum = 0;
+    size_t count = a->frames * (size_t)a->channels;
+    for (size_t i = 0; i < count; i++) {
+        peak = fmax(peak, fabs(a->samples[i]));
+        sum += (double)a->samples[i] * a->samples[i];
+    }
+    double rms = count ? sqrt(sum / (double)count) : 0;
+    printf("%s: %d ch, %.0f Hz, %.3f s, peak %.6g Pa (%.1f dB SPL), rms %.6g Pa\n", path,
+           a->channels, a->rate_hz, (double)a->frames / a->rate_hz, peak,
+           20 * log10(fmax(peak, 1e-12) / P_REF_PA), rms);
+}
+
+int analyze_main(int argc, char **argv)
+{
+    const char *in = NULL, *wave = NULL, *spec = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(usage, stdout);
+            return CLI_OK;
+        } else if (strcmp(argv[i], "--waveform") == 0 && i + 1 < argc) {
+            wave = argv[++i];
+        } else if (strcmp(argv[i], "--spectrogram") == 0 && i + 1 < argc) {
+            spec = argv[++i];
+        } else if (argv[i][0] != '-' && !in) {
+            in = argv[i];
+        } else {
+            fprintf(stderr, "fulgur analyze: unexpected argument \"%s\"\n%s", argv[i], usage);
+            return CLI_USAGE;
+        }
+    }
+    if (!in) {
+        fputs(usage, stderr);
+        return CLI_USAGE;
+    }
+    audio a;
+    if (read_wav(in, &a) != 0)
+        return CLI_USAGE;
+    print_levels(in, &a);
+    int rc = CLI_OK;
+    if ((wave && write_output(wave, write_envelope, &a) != 0) ||
+        (spec && write_output(spec, write_spectrogram, &a) != 0))
+        rc = CLI_RUNTIME;
+    free(a.samples);
+    return rc;
+}

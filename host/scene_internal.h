@@ -1,0 +1,26 @@
+/* The pieces of the scene parser, one file each. Each returns 0, or -1 with
+ * a path-bearing message in err (see json_field.h). */
+#ifndef HOST_SCENE_INTERNAL_H
+#define HOST_SCENE_INTERNAL_H
+
+#include "json_field.h"
+#include "scene.h"
+
+/* "listener" (item may be NULL: the default pose) into s->poses. */
+int scene_parse_listener(const cJSON *item, scene *s, char *err, size_t err_size);
+
+/* One element of "discharges", at path, into *out (zeroed on entry; owns
+ * out->nodes on success). Reads s's seed for the default seed. */
+int scene_parse_discharge(const cJSON *item, const char *path, size_t index, const scene *s,
+                          scene_discharge *out, char *err, size_t err_size);
+
+/* "tree" at path: reads the nodes, adds offset_m and checks the tree into
+ * *nodes (caller frees) and *count. */
+int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[3],
+                     fg_node **nodes, size_t *count, char *err, size_t err_size);
+
+/* fg_tree_check with the fault described at nodes_path ("...nodes[7]: ..."). */
+int scene_check_tree(const fg_node *nodes, size_t count, const char *nodes_path, char *err,
+                     size_t err_size);
+
+#endif

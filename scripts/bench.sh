@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Builds the benchmarks (Release) and runs them all, writing CSV and plots
+# to bench/results/. Takes a few minutes on 2 cores.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source scripts/deps.sh
+fulgur_install_deps
+cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DFULGUR_TESTS=OFF >/dev/null
+cmake --build build-bench -j2 >/dev/null
+mkdir -p bench/results
+for b in build-bench/bench/bench_*; do
+  echo "== ${b##*/}"
+  "$b"
+done
+for p in bench/plots/*.gp; do
+  gnuplot "$p"
+done
+echo "results in bench/results/:"
+ls bench/results/

@@ -1,0 +1,337 @@
+/* Statistical lightning (Glassner) and designer thunder: the geometry. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "fulgur/lightning.h"
+
+#define DEG (3.14159265358979323846 / 180)
+
+/* A straight vertical 5 km skeleton over the origin. */
+static const double vertical[] = {0, 0, 5000, 0, 0, 0};
+static const double listener[3] = {3000, 0, 1.7};
+
+static fg_tree *generate(const fg_lightning_params *p, fg_lightning_info *info)
+{
+    fg_tree *t;
+    assert_int_equal(fg_tree_create(0, &t), FG_OK);
+    fg_result r = fg_lightning_generate(p, t, info);
+    if (r != FG_OK)
+        fail_msg("generate: %s", fg_result_str(r));
+    return t;
+}
+
+static double len3(double x, double y, double z)
+{
+    return sqrt(x * x + y * y + z * z);
+}
+
+static double seg_len(const fg_node *n, size_t i)
+{
+    const fg_node *a = &n[n[i].parent];
+    return len3(n[i].x - a->x, n[i].y - a->y, n[i].z - a->z);
+}
+
+static double to_listener(const fg_node *n)
+{
+    return len3(n->x - listener[0], n->y - listener[1], n->z - listener[2]);
+}
+
+/* Angle between segment (i-1 -> i) and (i -> i+1) on the main channel. */
+static double turn_at(const fg_node *n, size_t i)
+{
+    double a[3] = {n[i].x - n[i - 1].x, n[i].y - n[i - 1].y, n[i].z - n[i - 1].z};
+    double b[3] = {n[i + 1].x - n[i].x, n[i + 1].y - n[i].y, n[i + 1].z - n[i].z};
+    double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    return atan2(len3(c[0], c[1], c[2]), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+
+static void preset_reaches_ground(void **state)
+{
+    (void)state;
+    double total = 0;
+    enum { RUNS = 10 };
+    for (uint64_t seed = 1; seed <= RUNS; seed++) {
+        fg_lightning_params p = {.strike_m = {100, -200}, .seed = seed};
+        fg_lightning_info info;
+        fg_tree *t = generate(&p, &info);
+        const fg_node *n = fg_tree_nodes(t);
+        size_t count = fg_tree_count(t);
+        assert_int_equal(fg_tree_check(n, count, NULL), FG_OK);
+        assert_int_equal(info.segments, count - 1);
+        /* main channel: nodes 0 .. main-1 in a chain from the cloud to the strike */
+        assert_float_equal(n[0].z, 5000, 1e-9);
+        const fg_node *last = &n[info.main_nodes - 1];
+        assert_float_equal(last->z, 0, 1e-9);
+        assert_true(len3(last->x - 100, last->y + 200, 0) < 3.0 + 1e-9);
+        for (size_t i = 0; i < count; i++) {
+            int main_ch = i < info.main_nodes;
+            assert_int_equal((n[i].flags & FG_NODE_MAIN) != 0, main_ch);
+            if (main_ch && i > 0)
+                assert_int_equal(n[i].parent, (int32_t)i - 1);
+            assert_true(n[i].z >= 0);
+        }
+        assert_true(info.main_length_m >= info.skeleton_length_m);
+        total += (double)info.segments;
+        fg_tree_destroy(t);
+    }
+    /* Matsuyama table 2: 9438 segments on average for lightning. */
+    assert_true(total / RUNS > 7000 && total / RUNS < 12000);
+}
+
+static void seeded_identical(void **state)
+{
+    (void)state;
+    const fg_thunder_block blocks[] = {{FG_THUNDER_CLAP, 0.3, 0.4, 1}};
+    fg_lightning_params p = {.seed = 77,
+                             .blocks = blocks,
+                             .block_count = 1,
+                             .listener_m = {3000, 0, 1.7}};
+    fg_tree *a = generate(&p, NULL), *b = generate(&p, NULL);
+    p.seed = 78;
+    fg_tree *c = generate(&p, NULL);
+    assert_int_equal(fg_tree_count(a), fg_tree_count(b));
+    assert_memory_equal(fg_tree_nodes(a), fg_tree_nodes(b), fg_tree_count(a) * sizeof(fg_node));
+    assert_true(fg_tree_count(a) != fg_tree_count(c) ||
+                memcmp(fg_tree_nodes(a), fg_tree_nodes(c), fg_tree_count(a) * sizeof(fg_node)));
+    fg_tree_destroy(a);
+    fg_tree_destroy(b);
+    fg_tree_destroy(c);
+}
+
+/* Every segment is segment_m long except the few of the final approach;
+ * the turns follow the half-normal law of the given mean. */
+static void segment_and_turn_statistics(void **state)
+{
+    (void)state;
+    double sum = 0, sum2 = 0, max_off = 0;
+    size_t turns = 0;
+    for (uint64_t seed = 1; seed <= 6; seed++) {
+        fg_lightning_params p = {.skeleton_m = vertical,
+                                 .skeleton_points = 2,
+                                 .segment_m = 2.5,
+                                 .turn_mean_deg = 12,
+                                 .branch_probability = -1,
+                                 .seed = seed};
+        fg_lightning_info info;
+        fg_tree *t = generate(&p, &info);
+        const fg_node *n = fg_tree_nodes(t);
+        assert_int_equal(info.main_nodes, fg_tree_count(t)); /* no branches */
+        size_t straight = info.main_nodes - 6; /* the final approach is straight in */
+        for (size_t i = 1; i < info.main_nodes; i++) {
+            if (i < straight)
+                assert_float_equal(seg_len(n, i), 2.5, 1e-9);
+            else
+                assert_true(seg_len(n, i) <= 2.5 + 1e-9);
+            max_off = fmax(max_off, hypot(n[i].x, n[i].y));
+        }
+        for (size_t i = 1; i + 1 < straight; i++) {
+            double a = turn_at(n, i);
+            sum += a;
+            sum2 += a * a;
+            turns++;
+        }
+        fg_tree_destroy(t);
+    }
+    double mean = sum / turns, rms = sqrt(sum2 / turns);
+    /* half-normal of mean m: rms = m sqrt(pi / 2); standard error ~0.1 deg */
+    assert_float_equal(mean / DEG, 12.0, 0.5);
+    assert_float_equal(rms / DEG, 12.0 * sqrt(3.14159265358979 / 2), 0.6);
+    /* tortuous, yet it follows the skeleton */
+    assert_true(max_off > 5 && max_off < 150);
+}
+
+/* Branch rule: per-node probability, exponential lengths of the given mean. */
+static void branch_statistics(void **state)
+{
+    (void)state;
+    size_t branches = 0, measured = 0, branch_nodes = 0, main_nodes = 0;
+    for (uint64_t seed = 1; seed <= 30; seed++) {
+        fg_lightning_params p = {.skeleton_m = vertical,
+                                 .skeleton_points = 2,
+                                 .branch_probability = 0.01,
+                                 .branch_length_m = 150,
+                                 .branch_depth = 1,
+                                 .seed = seed};
+        fg_lightning_info info;
+        fg_tree *t = generate(&p, &info);
+        const fg_node *n = fg_tree_nodes(t);
+        size_t count = fg_tree_count(t);
+        main_nodes += info.main_nodes - 1; /* the root cannot branch */
+        /* depth 1 only: each branch is a run of nodes starting on the main channel */
+        for (size_t i = info.main_nodes; i < count; i++) {
+            assert_float_equal(seg_len(n, i), 3.0, 1e-9);
+            if ((size_t)n[i].parent >= info.main_nodes) {
+                assert_int_equal(n[i].parent, (int32_t)i - 1);
+                continue;
+            }
+            branches++;
+            size_t len = 1;
+            while (i + len < count && (size_t)n[i + len].parent >= info.main_nodes)
+                len++;
+            if (n[i].z > 1000) { /* far from the ground, which would cut it short */
+                measured++;
+                branch_nodes += len;
+            }
+        }
+        fg_tree_destroy(t);
+    }
+    double expect = 0.01 * (double)main_nodes;
+    assert_true(fabs((double)branches - expect) < 4 * sqrt(expect));
+    /* ceil(L / 3 m) nodes for an exponential L of mean 150 m: 50.5 on average */
+    assert_true(measured > 300);
+    assert_float_equal((double)branch_nodes / (double)measured, 50.5, 0.15 * 50.5);
+}
+
+static void clap_rumble_roar(void **state)
+{
+    (void)state;
+    const fg_thunder_block blocks[] = {{FG_THUNDER_CLAP, 0.3, 0.5, 1},
+                                       {FG_THUNDER_RUMBLE, 0.6, 0.8, 1},
+                                       {FG_THUNDER_ROAR, 0.85, 1.0, 1}};
+    for (uint64_t seed = 1; seed <= 4; seed++) {
+        fg_lightning_params p = {.skeleton_m = vertical,
+                                 .skeleton_points = 2,
+                                 .blocks = blocks,
+                                 .block_count = 3,
+                                 .listener_m = {listener[0], listener[1], listener[2]},
+                                 .seed = seed};
+        fg_lightning_info info;
+        fg_tree *t = generate(&p, &info);
+        const fg_node *n = fg_tree_nodes(t);
+        assert_float_equal(n[info.main_nodes - 1].z, 0, 1e-9); /* still strikes the ground */
+
+        /* clap: an arc about the listener through the skeleton at 0.3 */
+        const fg_lightning_stretch *c = &info.blocks[0];
+        double radius = len3(listener[0], listener[1], 3500 - listener[2]);
+        assert_float_equal(c->distance_m, radius, 1e-6);
+        size_t on = 0, nodes = c->last_node - c->first_node + 1;
+        assert_true(nodes > 250); /* ~1000 m of 3 m steps */
+        for (size_t i = c->first_node; i <= c->last_node; i++)
+            on += fabs(to_listener(&n[i]) - radius) < 1e-3;
+        assert_true(on >= 0.9 * nodes);
+
+        /* rumble: nearly end-on, so the distance spans most of its length */
+        const fg_lightning_stretch *r = &info.blocks[1];
+        const fg_node *a = &n[r->first_node], *b = &n[r->last_node];
+        double chord[3] = {b->x - a->x, b->y - a->y, b->z - a->z};
+        double rad[3] = {a->x - listener[0], a->y - listener[1], a->z - listener[2]};
+        double cosang = fabs(chord[0] * rad[0] + chord[1] * rad[1] + chord[2] * rad[2]) /
+                        (len3(chord[0], chord[1], chord[2]) * len3(rad[0], rad[1], rad[2]));
+        assert_true(acos(cosang) < 15 * DEG);
+        assert_true(fabs(to_listener(b) - to_listener(a)) > 850);
+
+        /* roar: the mean turn is 16 (1 + 3) = 64 degrees (turns past 180
+         * fold back, so a little less is measured) */
+        const fg_lightning_stretch *o = &info.blocks[2];
+        double sum = 0;
+        size_t turns = 0;
+        for (size_t i = o->first_node + 1; i + 6 < o->last_node; i++, turns++)
+            sum += turn_at(n, i);
+        assert_true(turns > 50);
+        assert_float_equal(sum / turns / DEG, 62, 8);
+        fg_tree_destroy(t);
+    }
+}
+
+static void bad_input(void **state)
+{
+    (void)state;
+    const double one_point[] = {0, 0, 100};
+    const double underground[] = {0, 0, 100, 0, 0, -5};
+    const double repeated[] = {0, 0, 100, 0, 0, 100, 0, 0, 0};
+    const double nan_skel[] = {0, 0, 100, NAN, 0, 0};
+    const fg_thunder_block outside[] = {{FG_THUNDER_ROAR, -0.1, 0.5, 1}};
+    const fg_thunder_block beyond[] = {{FG_THUNDER_ROAR, 0.5, 1.2, 1}};
+    const fg_thunder_block reversed[] = {{FG_THUNDER_CLAP, 0.5, 0.4, 1}};
+    const fg_thunder_block overlap[] = {{FG_THUNDER_CLAP, 0.2, 0.5, 1},
+                                        {FG_THUNDER_RUMBLE, 0.4, 0.6, 1}};
+    const fg_thunder_block clap_to_end[] = {{FG_THUNDER_CLAP, 0.8, 1.0, 1}};
+    const fg_thunder_block unknown[] = {{(fg_thunder_feature)7, 0.2, 0.3, 1}};
+    const fg_thunder_block loud[] = {{FG_THUNDER_CLAP, 0.2, 0.3, 1.5}};
+    const fg_thunder_block nan_block[] = {{FG_THUNDER_CLAP, NAN, 0.3, 1}};
+    struct {
+        const char *what;
+        fg_lightning_params p;
+        fg_result want;
+    } cases[] = {
+        {"negative step", {.segment_m = -3}, FG_ERR_ARGUMENT},
+        {"NaN step", {.segment_m = NAN}, FG_ERR_NOT_FINITE},
+        {"infinite height", {.height_m = INFINITY}, FG_ERR_NOT_FINITE},
+        {"turn of 90 degrees", {.turn_mean_deg = 90}, FG_ERR_ARGUMENT},
+        {"branch probability 2", {.branch_probability = 2}, FG_ERR_ARGUMENT},
+        {"branch depth 9", {.branch_depth = 9}, FG_ERR_ARGUMENT},
+        {"NaN listener", {.listener_m = {0, NAN, 0}}, FG_ERR_NOT_FINITE},
+        {"empty skeleton", {.skeleton_m = vertical, .skeleton_points = 0}, FG_ERR_ARGUMENT},
+        {"skeleton NULL", {.skeleton_m = NULL, .skeleton_points = 3}, FG_ERR_NULL},
+        {"one point", {.skeleton_m = one_point, .skeleton_points = 1}, FG_ERR_ARGUMENT},
+        {"underground", {.skeleton_m = underground, .skeleton_points = 2}, FG_ERR_ARGUMENT},
+        {"repeated point", {.skeleton_m = repeated, .skeleton_points = 3}, FG_ERR_ARGUMENT},
+        {"NaN skeleton", {.skeleton_m = nan_skel, .skeleton_points = 2}, FG_ERR_NOT_FINITE},
+        {"block below 0", {.blocks = outside, .block_count = 1}, FG_ERR_ARGUMENT},
+        {"block above 1", {.blocks = beyond, .block_count = 1}, FG_ERR_ARGUMENT},
+        {"block reversed", {.blocks = reversed, .block_count = 1}, FG_ERR_ARGUMENT},
+        {"blocks overlap", {.blocks = overlap, .block_count = 2}, FG_ERR_ARGUMENT},
+        {"clap to the end", {.blocks = clap_to_end, .block_count = 1}, FG_ERR_ARGUMENT},
+        {"unknown feature", {.blocks = unknown, .block_count = 1}, FG_ERR_ARGUMENT},
+        {"amplitude 1.5", {.blocks = loud, .block_count = 1}, FG_ERR_ARGUMENT},
+        {"NaN block", {.blocks = nan_block, .block_count = 1}, FG_ERR_NOT_FINITE},
+        {"blocks NULL", {.blocks = NULL, .block_count = 1}, FG_ERR_NULL},
+        {"too many blocks", {.blocks = loud, .block_count = FG_THUNDER_MAX_BLOCKS + 1},
+         FG_ERR_ARGUMENT},
+    };
+    fg_tree *t;
+    assert_int_equal(fg_tree_create(0, &t), FG_OK);
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        fg_lightning_params out;
+        memset(&out, 0x5A, sizeof out);
+        fg_lightning_params before = out;
+        if (fg_lightning_params_resolve(&cases[i].p, &out) != cases[i].want)
+            fail_msg("%s: resolve", cases[i].what);
+        assert_memory_equal(&out, &before, sizeof out);
+        fg_lightning_info info;
+        memset(&info, 0x5A, sizeof info);
+        fg_lightning_info info_before = info;
+        if (fg_lightning_generate(&cases[i].p, t, &info) != cases[i].want)
+            fail_msg("%s: generate", cases[i].what);
+        assert_int_equal(fg_tree_count(t), 0);
+        assert_memory_equal(&info, &info_before, sizeof info);
+    }
+    fg_lightning_params p = {.seed = 1};
+    assert_int_equal(fg_lightning_generate(&p, NULL, NULL), FG_ERR_NULL);
+    assert_int_equal(fg_lightning_generate(NULL, t, NULL), FG_ERR_NULL);
+    assert_int_equal(fg_tree_add(t, 1, 2, 3, -1, 0, NULL), FG_OK);
+    assert_int_equal(fg_lightning_generate(&p, t, NULL), FG_ERR_ARGUMENT);
+    assert_int_equal(fg_tree_count(t), 1);
+    fg_tree_clear(t);
+    p.max_nodes = 100;
+    assert_int_equal(fg_lightning_generate(&p, t, NULL), FG_ERR_CAPACITY);
+    assert_int_equal(fg_tree_count(t), 0);
+    /* a clap arc longer than half its circle: the listener is too close */
+    const fg_thunder_block clap[] = {{FG_THUNDER_CLAP, 0.1, 0.9, 1}};
+    fg_lightning_params near = {.skeleton_m = vertical,
+                                .skeleton_points = 2,
+                                .blocks = clap,
+                                .block_count = 1,
+                                .listener_m = {10, 0, 4000}};
+    assert_int_equal(fg_lightning_generate(&near, t, NULL), FG_ERR_ARGUMENT);
+    assert_int_equal(fg_tree_count(t), 0);
+    fg_tree_destroy(t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(preset_reaches_ground),
+        cmocka_unit_test(seeded_identical),
+        cmocka_unit_test(segment_and_turn_statistics),
+        cmocka_unit_test(branch_statistics),
+        cmocka_unit_test(clap_rumble_roar),
+        cmocka_unit_test(bad_input),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
