@@ -66,12 +66,11 @@ static int boolean(const ctx *c, const cJSON *obj, const char *key, const char *
     return 0;
 }
 
-static int vec3(const ctx *c, const cJSON *obj, const char *key, const char *field, int required,
-                double out[3])
+static int vec3(const ctx *c, const cJSON *obj, const char *key, const char *field, double out[3])
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
     if (!v)
-        return required ? fail(c, field, "is required: [x, y, z] in metres") : 0;
+        return fail(c, field, "is required: [x, y, z] in metres");
     if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 3)
         return fail(c, field, "must be [x, y, z]");
     for (int a = 0; a < 3; a++) {
@@ -109,8 +108,8 @@ static int parse_grid(const ctx *c, const cJSON *spec, fg_grid_config *g)
         return fail(c, "grid", "is required: {\"size\", \"min\", \"max\"}");
     int size = FG_FIELD_DEFAULT_SIZE;
     if (integer(c, grid, "size", "grid.size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size) ||
-        vec3(c, grid, "min", "grid.min", 1, g->min_m) ||
-        vec3(c, grid, "max", "grid.max", 1, g->max_m))
+        vec3(c, grid, "min", "grid.min", g->min_m) ||
+        vec3(c, grid, "max", "grid.max", g->max_m))
         return -1;
     for (int a = 0; a < 3; a++) {
         g->size[a] = size;
@@ -153,24 +152,24 @@ static int parse_shape(const ctx *c0, const cJSON *j, const char *field, fg_shap
         return -1;
     switch (s->kind) {
     case FG_SHAPE_SPHERE:
-        if (vec3(&c, j, "center", sub(f, sizeof f, field, "center"), 1, s->centre_m) ||
+        if (vec3(&c, j, "center", sub(f, sizeof f, field, "center"), s->centre_m) ||
             number(&c, j, "radius", sub(f, sizeof f, field, "radius"), &s->radius_m))
             return -1;
         if (!(s->radius_m > 0.0))
             return fail(&c, sub(f, sizeof f, field, "radius"), "is required and must be > 0 (metres)");
         break;
     case FG_SHAPE_BOX:
-        if (vec3(&c, j, "min", sub(f, sizeof f, field, "min"), 1, s->box_min_m) ||
-            vec3(&c, j, "max", sub(f, sizeof f, field, "max"), 1, s->box_max_m))
+        if (vec3(&c, j, "min", sub(f, sizeof f, field, "min"), s->box_min_m) ||
+            vec3(&c, j, "max", sub(f, sizeof f, field, "max"), s->box_max_m))
             return -1;
         break;
     case FG_SHAPE_PLANE:
-        if (vec3(&c, j, "center", sub(f, sizeof f, field, "center"), 1, s->centre_m) ||
-            vec3(&c, j, "normal", sub(f, sizeof f, field, "normal"), 1, s->normal))
+        if (vec3(&c, j, "center", sub(f, sizeof f, field, "center"), s->centre_m) ||
+            vec3(&c, j, "normal", sub(f, sizeof f, field, "normal"), s->normal))
             return -1;
         break;
     case FG_SHAPE_POINT:
-        if (vec3(&c, j, "center", sub(f, sizeof f, field, "center"), 1, s->centre_m))
+        if (vec3(&c, j, "center", sub(f, sizeof f, field, "center"), s->centre_m))
             return -1;
         break;
     case FG_SHAPE_GROUND:
@@ -214,9 +213,9 @@ static int parse_growth(const ctx *c, const cJSON *spec, fg_growth_config *g, in
     return 0;
 }
 
-/* Sets the shapes, solves, grows, and moves the tree by offset. */
+/* Sets the shapes, solves and grows. */
 static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes, size_t count,
-               const fg_growth_config *growth, int dbm, const double offset[3], fg_tree *out)
+               const fg_growth_config *growth, int dbm, fg_tree *out)
 {
     fg_field *f = NULL;
     fg_result r = fg_field_create(grid, &f);
@@ -258,12 +257,6 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
         return fail(c, "shapes", "the target cannot be reached from the origin");
     if (r != FG_OK)
         return fail(c, "growth", "%s", fg_result_str(r));
-    fg_node *v = fg_tree_nodes(out);
-    for (size_t i = 0; i < fg_tree_count(out); i++) {
-        v[i].x += offset[0];
-        v[i].y += offset[1];
-        v[i].z += offset[2];
-    }
     return 0;
 }
 
@@ -272,9 +265,7 @@ static int generate_preset(fg_preset preset, const cJSON *spec, const char *path
 {
     ctx c = {path, err, err_size};
     int size = FG_FIELD_DEFAULT_SIZE, dbm = 0;
-    double centre[3] = {0.0, 0.0, 0.0};
-    if (integer(&c, spec, "size", "size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size) ||
-        vec3(&c, spec, "center", "center", 0, centre))
+    if (integer(&c, spec, "size", "size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size))
         return -1;
     fg_discharge_setup s;
     if (fg_discharge_preset(preset, size, &s) != FG_OK)
@@ -282,7 +273,7 @@ static int generate_preset(fg_preset preset, const cJSON *spec, const char *path
     s.growth.seed = gc->seed;
     if (parse_growth(&c, spec, &s.growth, &dbm))
         return -1;
-    return run(&c, &s.grid, s.shapes, s.shape_count, &s.growth, dbm, centre, out);
+    return run(&c, &s.grid, s.shapes, s.shape_count, &s.growth, dbm, out);
 }
 
 int gen_spark_gap(const cJSON *spec, const char *path, const gen_context *gc, fg_tree *out,
@@ -324,6 +315,5 @@ int gen_field(const cJSON *spec, const char *path, const gen_context *gc, fg_tre
     int dbm = 0;
     if (parse_growth(&c, spec, &g, &dbm))
         return -1;
-    const double zero[3] = {0.0, 0.0, 0.0};
-    return run(&c, &grid, shapes, (size_t)count, &g, dbm, zero, out);
+    return run(&c, &grid, shapes, (size_t)count, &g, dbm, out);
 }

@@ -242,13 +242,12 @@ fg_result fg_field_classify(const fg_field *f, const double *pts, size_t n, uint
             return FG_ERR_NOT_FINITE;
     for (size_t p = 0; p < n; p++) {
         const double *x = &pts[3 * p];
-        if (!inside_box(f, x)) {
-            out[p] = FG_REGION_OUTSIDE;
-            continue;
+        uint8_t region = FG_REGION_OUTSIDE;
+        if (inside_box(f, x)) {
+            int c[3];
+            fg_field_nearest(f, x, c);
+            region = f->label[fg_level_index(&f->level[0], c[0], c[1], c[2])];
         }
-        int c[3];
-        fg_field_nearest(f, x, c);
-        uint8_t region = f->label[fg_level_index(&f->level[0], c[0], c[1], c[2])];
         for (size_t s = f->shape_count; s-- > 0;)
             if (fg_shape_contains(&f->shapes[s], x)) {
                 region = region_of(f->shapes[s].role);

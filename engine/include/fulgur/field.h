@@ -153,12 +153,14 @@ typedef enum fg_region {
     FG_REGION_ORIGIN,
     FG_REGION_TARGET,
     FG_REGION_FIXED,
-    FG_REGION_OUTSIDE    /* outside the grid's box */
+    FG_REGION_OUTSIDE    /* outside the grid's box, in no shape */
 } fg_region;
 
 /* The region at n points into out[0..n): the shapes tested geometrically
- * (later shapes win), else the label of the nearest node (point shapes,
- * spheres smaller than a cell). [sim-thread]
+ * (later shapes win), also beyond the box (a target plane on the box's
+ * face extends past it); else, inside the box, the label of the nearest
+ * node (point shapes, spheres smaller than a cell); else OUTSIDE.
+ * [sim-thread]
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE a coordinate (out unchanged). */
 FG_API FG_NODISCARD fg_result fg_field_classify(const fg_field *field, const double *points_m,
                                                 size_t n, uint8_t *out);
