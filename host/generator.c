@@ -5,11 +5,15 @@
 #include <string.h>
 
 #include "generator.h"
+#include "generator_field.h"
 #include "generator_lightning.h"
 
 static const gen_entry table[] = {
     {"lightning", gen_lightning},
     {"charges", gen_charges},
+    {"spark_gap", gen_spark_gap},
+    {"plasma_ball", gen_plasma_ball},
+    {"field", gen_field},
     {NULL, NULL}, /* the end */
 };
 

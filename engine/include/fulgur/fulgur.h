@@ -2,11 +2,14 @@
 #ifndef FULGUR_FULGUR_H
 #define FULGUR_FULGUR_H
 
-#include "fulgur/defs.h"
 #include "fulgur/charges.h"
+#include "fulgur/defs.h"
+#include "fulgur/discharge.h"
 #include "fulgur/engine.h"
-#include "fulgur/propagation.h"
+#include "fulgur/field.h"
+#include "fulgur/growth.h"
 #include "fulgur/lightning.h"
+#include "fulgur/propagation.h"
 #include "fulgur/result.h"
 #include "fulgur/sound.h"
 #include "fulgur/tree.h"

@@ -1,0 +1,49 @@
+/* The node buffer a tree is grown in before it is handed out. */
+#include <stdlib.h>
+
+#include "growth_internal.h"
+
+fg_result fg_nodebuf_push(fg_nodebuf *b, const double x[3], int32_t parent, size_t *index)
+{
+    if (b->count == b->cap) {
+        size_t cap = b->cap ? 2 * b->cap : 256;
+        fg_node *v = realloc(b->v, cap * sizeof *v);
+        if (!v)
+            return FG_ERR_NO_MEMORY;
+        b->v = v;
+        b->cap = cap;
+    }
+    b->v[b->count] = (fg_node){x[0], x[1], x[2], parent, 0};
+    if (index)
+        *index = b->count;
+    b->count++;
+    return FG_OK;
+}
+
+void fg_nodebuf_free(fg_nodebuf *b)
+{
+    free(b->v);
+    *b = (fg_nodebuf){0};
+}
+
+size_t fg_nodebuf_mark_main(fg_nodebuf *b, size_t node)
+{
+    size_t n = 0;
+    for (int32_t i = (int32_t)node; i >= 0; i = b->v[i].parent) {
+        b->v[i].flags |= FG_NODE_MAIN;
+        n++;
+    }
+    return n;
+}
+
+fg_result fg_nodebuf_emit(const fg_nodebuf *b, fg_tree *out)
+{
+    fg_tree_clear(out);
+    for (size_t i = 0; i < b->count; i++) {
+        const fg_node *n = &b->v[i];
+        fg_result r = fg_tree_add(out, n->x, n->y, n->z, n->parent, n->flags, NULL);
+        if (r != FG_OK)
+            return r;
+    }
+    return FG_OK;
+}
