@@ -3,6 +3,8 @@
 #include <string.h>
 
 #include "charges_internal.h"
+#include "pick_internal.h"
+#include "tree_internal.h"
 #include "fulgur/sound.h"
 
 #define DEFAULT_CANDIDATES 8
@@ -101,21 +103,10 @@ size_t fg_charges_choose(fg_rng *rng, const fg_vec3 *cand, double *e, size_t m, 
 {
     size_t got = 0;
     while (got < n) {
-        double total = 0;
-        for (size_t k = 0; k < m; k++)
-            total += e[k];
-        if (!(total > 0))
+        int drawn = fg_pick(e, (int)m, fg_rng_uniform(rng));
+        if (drawn < 0)
             break;
-        double u = fg_rng_uniform(rng) * total;
-        size_t pick = m;
-        for (size_t k = 0; k < m; k++) {
-            if (e[k] <= 0)
-                continue;
-            pick = k;  /* the last eligible one absorbs rounding at the top */
-            if (u < e[k])
-                break;
-            u -= e[k];
-        }
+        size_t pick = (size_t)drawn;
         chosen[got++] = pick;
         e[pick] = 0;
         for (size_t k = 0; k < m; k++)
@@ -165,13 +156,6 @@ static fg_vec3 step_end(const fg_charges_params *p, fg_vec3 a, fg_vec3 c, int *r
     return c;
 }
 
-static void mark_main(fg_tree *tree, size_t node)
-{
-    fg_node *nodes = fg_tree_nodes(tree);
-    for (int32_t i = (int32_t)node; i >= 0; i = nodes[i].parent)
-        nodes[i].flags |= FG_NODE_MAIN;
-}
-
 /* Advances one tip: its chosen candidates become nodes and next tips; sets
  * *done when one of them reaches the target. */
 static fg_result advance(grower *g, const tip *t, int *done)
@@ -203,7 +187,7 @@ static fg_result advance(grower *g, const tip *t, int *done)
         if (r != FG_OK)
             return r;
         if (reached) {
-            mark_main(g->tree, idx);
+            fg_nodes_mark_main(fg_tree_nodes(g->tree), idx);
             *done = 1;
             return FG_OK;
         }

@@ -80,26 +80,6 @@ double fg_eq2_weight(double phi, double exponent)
     return phi > 0.0 ? pow(phi, exponent) : 0.0;
 }
 
-int fg_pick(const double *w, int n, double u)
-{
-    double sum = 0.0;
-    for (int i = 0; i < n; i++)
-        sum += w[i];
-    if (!(sum > 0.0))
-        return -1;
-    double target = u * sum, acc = 0.0;
-    int last = -1;
-    for (int i = 0; i < n; i++) {
-        if (w[i] <= 0.0)
-            continue;
-        acc += w[i];
-        last = i;
-        if (target < acc)
-            return i;
-    }
-    return last;
-}
-
 fg_result fg_field_direction(const fg_field_source *src, const double x[3], double dir[3])
 {
     double h = src->cell_m, probe[18], v[6];

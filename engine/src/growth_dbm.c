@@ -286,7 +286,7 @@ fg_result fg_grow_dbm(fg_field *f, const fg_growth_config *config, fg_tree *out,
             f->label[d.chan[i].id] = FG_REGION_FREE;
     fg_field_labels_changed(f);
     if (r == FG_OK) {
-        rep.main_nodes = fg_nodebuf_mark_main(&nodes, hit);
+        rep.main_nodes = fg_nodes_mark_main(nodes.v, hit);
         rep.nodes = nodes.count;
         r = fg_nodebuf_emit(&nodes, out);
         if (r == FG_OK && report)

@@ -7,7 +7,9 @@
 #include <stdint.h>
 
 #include "fulgur/growth.h"
+#include "pick_internal.h"
 #include "rng_internal.h"
+#include "tree_internal.h"
 
 typedef struct fg_nodebuf {
     fg_node *v;
@@ -17,8 +19,6 @@ typedef struct fg_nodebuf {
 /* growth_tree.c */
 fg_result fg_nodebuf_push(fg_nodebuf *b, const double x[3], int32_t parent, size_t *index);
 void fg_nodebuf_free(fg_nodebuf *b);
-/* Flags the path root -> node with FG_NODE_MAIN; returns its node count. */
-size_t fg_nodebuf_mark_main(fg_nodebuf *b, size_t node);
 /* Clears out and copies the nodes into it. */
 fg_result fg_nodebuf_emit(const fg_nodebuf *b, fg_tree *out);
 
@@ -30,9 +30,6 @@ fg_result fg_growth_resolve(const fg_growth_config *config, fg_growth_config *ou
 void fg_cone_directions(fg_rng *rng, const double axis[3], double half_rad, int n, double *dirs);
 /* Eq. 2's weight: max(phi, 0)^exponent. */
 double fg_eq2_weight(double phi, double exponent);
-/* Index i with probability w[i] / sum(w), u uniform in [0, 1); -1 if the
- * sum is 0. */
-int fg_pick(const double *w, int n, double u);
 /* The unit gradient of phi at x (central differences one cell apart) into
  * dir; dir is left as it was where the gradient vanishes. */
 fg_result fg_field_direction(const fg_field_source *src, const double x[3], double dir[3]);

@@ -214,7 +214,7 @@ fg_result fg_grow_matsuyama(const fg_field_source *src, const fg_growth_config *
     int steps = 0;
     r = grow(&g, &steps);
     if (r == FG_OK) {
-        size_t main_nodes = fg_nodebuf_mark_main(&g.nodes, g.first_hit);
+        size_t main_nodes = fg_nodes_mark_main(g.nodes.v, g.first_hit);
         r = fg_nodebuf_emit(&g.nodes, out);
         if (r == FG_OK && report)
             *report = (fg_growth_report){.nodes = g.nodes.count, .main_nodes = main_nodes,

@@ -26,16 +26,6 @@ void fg_nodebuf_free(fg_nodebuf *b)
     *b = (fg_nodebuf){0};
 }
 
-size_t fg_nodebuf_mark_main(fg_nodebuf *b, size_t node)
-{
-    size_t n = 0;
-    for (int32_t i = (int32_t)node; i >= 0; i = b->v[i].parent) {
-        b->v[i].flags |= FG_NODE_MAIN;
-        n++;
-    }
-    return n;
-}
-
 fg_result fg_nodebuf_emit(const fg_nodebuf *b, fg_tree *out)
 {
     fg_tree_clear(out);

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "fulgur/tree.h"
+#include "tree_internal.h"
 
 struct fg_tree {
     fg_node *nodes;
@@ -155,4 +156,12 @@ fg_node *fg_tree_nodes(fg_tree *t)
 size_t fg_tree_count(const fg_tree *t)
 {
     return t ? t->count : 0;
+}
+
+size_t fg_nodes_mark_main(fg_node *nodes, size_t node)
+{
+    size_t n = 0;
+    for (int32_t i = (int32_t)node; i >= 0; i = nodes[i].parent, n++)
+        nodes[i].flags |= FG_NODE_MAIN;
+    return n;
 }
