@@ -39,8 +39,6 @@ bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_so
     uint64_t frames = 0;
     while (st.finished == 0) {
         check(fg_engine_render(e, planes, block), "render");
-        for (unsigned i = 0; i < block; i++)
-            run.energy += (double)planes[0][i] * planes[0][i];
         frames += block;
         fg_engine_get_stats(e, &st);
     }

@@ -11,7 +11,6 @@ typedef struct bench_run {
     double post_s;     /* fg_engine_post: preparation and the arrival sort */
     double render_s;   /* every fg_engine_render call until the voice ended */
     double sound_s;    /* length of the sound produced */
-    double energy;     /* sum of squares of channel 0, to keep the work honest */
 } bench_run;
 
 /* Renders nodes[0..count) as one discharge with params heard from

@@ -62,11 +62,20 @@ double wm_integral(const wm_shape *w, double tau)
     return 4.0 * b * psi * psi * psi / (3.0 * s);
 }
 
+/* The sample holding position x: floor(x + 1/2), without a libm call on
+ * targets where floor is not an instruction. */
+static long sample_at(double x)
+{
+    double y = x + 0.5;
+    long m = (long)y;
+    return m - ((double)m > y);
+}
+
 void wm_event_span(const wm_event *e, long *first, long *last)
 {
     double half = (e->shape.psi + e->shape.s) * e->width;
-    *first = (long)floor(e->center - half + 0.5);
-    *last = (long)floor(e->center + half + 0.5);
+    *first = sample_at(e->center - half);
+    *last = sample_at(e->center + half);
 }
 
 /* P at the sample edge n - 1/2. */
@@ -165,6 +174,51 @@ static void add_range(wm_block *b, const wm_event *e, long lo, long hi)
     }
 }
 
+/* Third differences of one breakpoint at sample position x where the
+ * pressure gains a0 + a1 (x' - x) + a2 (x' - x)^2 (per sample units): its
+ * running integral G(u) = a0 u + a1 u^2/2 + a2 u^3/3 from x, sampled at
+ * sample edges, has a fourth difference that vanishes past four samples. */
+static void add_breakpoint(wm_block *b, double x, double a0, double a1, double a2)
+{
+    long m = sample_at(x);
+    long n = (long)b->n;
+    if (m > n - 1 || m + 3 < 0)
+        return;
+    double f = (double)m + 0.5 - x, g[4];
+    for (int j = 0; j < 4; j++) {
+        double u = j + f;
+        g[j] = u * (a0 + u * (0.5 * a1 + u * a2 / 3.0));
+    }
+    double taps[4] = {g[0], g[1] - 4.0 * g[0], g[2] - 4.0 * g[1] + 6.0 * g[0],
+                      g[3] - 4.0 * g[2] + 6.0 * g[1] - 4.0 * g[0]};
+    for (long q = m < 0 ? -m : 0; q < 4 && m + q < n; q++)
+        b->d3[m + q] += taps[q];
+}
+
+/* The four breakpoints in closed form, when they lie at least a sample
+ * apart in pairs (s w >= 2): jumps of p' and p'' from eq. 5, per tau,
+ * scaled to samples. Nearer pairs (broadside, s -> 0) would cancel large
+ * terms, so those waves take the exact evaluation around each breakpoint. */
+#define CLOSED_FORM_MIN_SW 2.0
+
+static void add_breakpoints(wm_block *b, const wm_event *e)
+{
+    const wm_shape *w = &e->shape;
+    double s = w->s, psi = w->psi, k1 = 2.0 * w->b * psi / s, k2 = 2.0 * w->b / s;
+    double inner = fabs(psi - s), outer = psi + s;
+    /* (tau, jump of p', jump of p'') in ascending tau */
+    double jumps[4][3] = {
+        {-outer, k1, -k2},
+        {-inner, s < psi ? -k1 : k1, k2},
+        {inner, s < psi ? k1 : -k1, k2},
+        {outer, -k1, -k2},
+    };
+    double wd = e->width;
+    for (int i = 0; i < 4; i++)
+        add_breakpoint(b, e->center + jumps[i][0] * wd, 0.0, jumps[i][1] / wd,
+                       0.5 * jumps[i][2] / (wd * wd));
+}
+
 wm_status wm_block_add(wm_block *b, const wm_event *e)
 {
     const wm_shape *w = &e->shape;
@@ -175,7 +229,14 @@ wm_status wm_block_add(wm_block *b, const wm_event *e)
         return WM_DONE;
     if (first >= n)
         return WM_PENDING;
+    b->touched = true;
 
+    if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
+        if (first < 0)
+            add_range(b, e, -3, -1);
+        add_breakpoints(b, e);
+        return WM_SOUNDING;
+    }
     /* Breakpoints, ascending; each disturbs the samples m-3..m+3 around the
      * sample m that holds it. */
     double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
@@ -186,7 +247,7 @@ wm_status wm_block_add(wm_block *b, const wm_event *e)
         hi = -1;
     }
     for (int i = 0; i < 4; i++) {
-        long m = (long)floor(e->center + taus[i] * e->width + 0.5);
+        long m = sample_at(e->center + taus[i] * e->width);
         long a = m - 3 < -3 ? -3 : m - 3;
         long z = m + 3 > n - 1 ? n - 1 : m + 3;
         if (a > z)
@@ -203,7 +264,6 @@ wm_status wm_block_add(wm_block *b, const wm_event *e)
     }
     if (hi != LONG_MIN)
         add_range(b, e, lo, hi);
-    b->touched = true;
     return WM_SOUNDING;
 }
 
