@@ -1,4 +1,5 @@
 # Render-callback time percentiles against the block budget.
+reset
 set terminal pngcairo size 900,600 font "sans,11"
 set output "bench/results/callback.png"
 set datafile separator ","

@@ -1,5 +1,6 @@
 # Time to synthesize a whole discharge against its segment count, with the
 # least-squares line (Matsuyama fig. 14). Reads bench/results/linearity*.
+reset
 set terminal pngcairo size 900,600 font "sans,11"
 set output "bench/results/linearity.png"
 set datafile separator ","

@@ -1,4 +1,5 @@
 # The validation report's plots (bench/results/validation.md).
+reset
 set terminal pngcairo size 900,520 font "sans,11"
 set datafile separator ","
 set grid
