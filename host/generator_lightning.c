@@ -24,26 +24,6 @@ static int count_range(const cJSON *obj, const char *base, const char *key, doub
     return 0;
 }
 
-/* Reads obj[key], when present, as [x, y]. */
-static int vec2(const cJSON *obj, const char *base, const char *key, double out[2], char *err,
-                size_t err_size)
-{
-    const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (!item)
-        return 0;
-    char path[JSON_PATH_MAX];
-    json_path_key(path, sizeof path, base, key);
-    if (!cJSON_IsArray(item) || cJSON_GetArraySize(item) != 2)
-        return json_fail(err, err_size, path, "expected an array [x, y]");
-    for (int i = 0; i < 2; i++)
-        if (!cJSON_IsNumber(cJSON_GetArrayItem(item, i)) ||
-            !isfinite(cJSON_GetArrayItem(item, i)->valuedouble))
-            return json_fail(err, err_size, path, "element %d is not a finite number", i);
-    out[0] = cJSON_GetArrayItem(item, 0)->valuedouble;
-    out[1] = cJSON_GetArrayItem(item, 1)->valuedouble;
-    return 0;
-}
-
 /* "skeleton": [[x, y, z], ...], root first; *out is malloc'd (caller frees). */
 static int parse_skeleton(const cJSON *item, const char *path, double **out, size_t *count,
                           char *err, size_t err_size)
@@ -179,7 +159,7 @@ int gen_lightning(const cJSON *spec, const char *path, const gen_context *ctx, f
     memcpy(p.listener_m, ctx->listener_m, sizeof p.listener_m);
     double branch_p = -2;
     int placed;
-    if (vec2(spec, path, "strike", p.strike_m, err, err_size) ||
+    if (json_vector(spec, path, "strike", 2, p.strike_m, err, err_size) ||
         placement(spec, path, ctx, p.strike_m, &placed, err, err_size) ||
         json_number(spec, path, "height", positive, &p.height_m, err, err_size) ||
         json_number(spec, path, "segment", positive, &p.segment_m, err, err_size) ||

@@ -97,16 +97,17 @@ int json_number(const cJSON *obj, const char *base, const char *key, json_range 
     return json_number_value(item, path, range, out, err, err_size);
 }
 
-int json_vec3(const cJSON *obj, const char *base, const char *key, double out[3], char *err,
-              size_t err_size)
+int json_vector(const cJSON *obj, const char *base, const char *key, int n, double *out,
+                char *err, size_t err_size)
 {
+    static const char *const forms[] = {"", "", "[x, y]", "[x, y, z]"};
     const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, key);
     if (!item)
         return 0;
     char path[JSON_PATH_MAX];
     json_path_key(path, sizeof path, base, key);
-    if (!cJSON_IsArray(item) || cJSON_GetArraySize(item) != 3)
-        return json_fail(err, err_size, path, "expected an array [x, y, z]");
+    if (!cJSON_IsArray(item) || cJSON_GetArraySize(item) != n)
+        return json_fail(err, err_size, path, "expected an array %s", forms[n]);
     double v[3];
     int i = 0;
     for (const cJSON *c = item->child; c; c = c->next, i++) {
@@ -114,6 +115,12 @@ int json_vec3(const cJSON *obj, const char *base, const char *key, double out[3]
             return json_fail(err, err_size, path, "element %d is not a finite number", i);
         v[i] = c->valuedouble;
     }
-    memcpy(out, v, sizeof v);
+    memcpy(out, v, (size_t)n * sizeof *v);
     return 0;
+}
+
+int json_vec3(const cJSON *obj, const char *base, const char *key, double out[3], char *err,
+              size_t err_size)
+{
+    return json_vector(obj, base, key, 3, out, err, err_size);
 }

@@ -46,6 +46,10 @@ int json_number_value(const cJSON *item, const char *path, json_range range, dou
 int json_number(const cJSON *obj, const char *base, const char *key, json_range range,
                 double *out, char *err, size_t err_size);
 
+/* Reads obj[key], when present, as an array of n (2 or 3) finite numbers. */
+int json_vector(const cJSON *obj, const char *base, const char *key, int n, double *out,
+                char *err, size_t err_size);
+
 /* Reads obj[key], when present, as an array of three finite numbers. */
 int json_vec3(const cJSON *obj, const char *base, const char *key, double out[3], char *err,
               size_t err_size);
