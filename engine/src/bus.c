@@ -123,17 +123,13 @@ static bool ringing(const fg_iir *f)
     return false;
 }
 
-/* Whether bus b, ear ch, has input or a tail to play this block. */
-static bool live(fg_bus_set *s, unsigned b, unsigned ch)
+/* Whether bus b, ear ch, has input or a tail to play this block. Filters
+ * are looked at only once they have had input. */
+static bool live(const fg_bus *bus, unsigned b, unsigned ch)
 {
-    const fg_bus *bus = &s->bus[b];
-    if (bus->block[ch].touched || bus->pre_used[ch])
+    if (bus->block[ch].touched || bus->pre_used[ch] || bus->ringing[ch])
         return true;
-    if (is_fir(b) && bus->quiet[ch] < FG_ABE_FIR_HISTORY)
-        return true;
-    if (is_band(b) && s->bands_designed && ringing(band_filter(s, b, ch)))
-        return true;
-    return b >= FG_BUS_PLAIN && ringing(&s->shelf[b - FG_BUS_PLAIN][ch]);
+    return is_fir(b) && bus->quiet[ch] < FG_ABE_FIR_HISTORY;
 }
 
 void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
@@ -145,20 +141,26 @@ void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
                 wm_block_end(&bus->block[ch], out[ch], 1.0f);
                 continue;
             }
-            if (!live(s, b, ch))
+            if (!live(bus, b, ch))
                 continue;
             bool input = bus->block[ch].touched || bus->pre_used[ch];
             float *x = bus->pre[ch];
             bus->pre_used[ch] = true; /* zero it again next block */
             wm_block_end(&bus->block[ch], x, 1.0f);
-            if (is_band(b))
+            bool tail = false;
+            if (is_band(b)) {
                 fg_iir_process(band_filter(s, b, ch), x, n);
+                tail = ringing(band_filter(s, b, ch));
+            }
             if (is_fir(b)) {
                 fg_abe_fir_process(&s->fir[2 * (b / FG_BUS_PLAIN) + ch], x, n);
                 bus->quiet[ch] = input ? 0 : bus->quiet[ch] + n;
             }
-            if (b >= FG_BUS_PLAIN)
+            if (b >= FG_BUS_PLAIN) {
                 fg_iir_process(&s->shelf[b - FG_BUS_PLAIN][ch], x, n);
+                tail = tail || ringing(&s->shelf[b - FG_BUS_PLAIN][ch]);
+            }
+            bus->ringing[ch] = tail;
             for (uint32_t i = 0; i < n; i++)
                 out[ch][i] += x[i];
         }

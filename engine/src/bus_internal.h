@@ -32,6 +32,7 @@ typedef struct fg_bus {
     float *pre[2];       /* the ear's signal before the filters */
     bool pre_used[2];    /* something was written into pre this block */
     uint32_t quiet[2];   /* frames since the FIR last had input */
+    bool ringing[2];     /* the IIR filters still hold a tail; audio thread only */
 } fg_bus;
 
 typedef struct fg_bus_set {
@@ -43,7 +44,9 @@ typedef struct fg_bus_set {
     /* filters: shared coefficients, state per ear */
     fg_band_plan plan;
     fg_iir band[2][FG_ABSORPTION_BANDS][2]; /* [plain, shadowed twin][band][ear] */
-    bool bands_designed; /* sim thread; published to audio by the inbox ring */
+    bool bands_designed; /* sim thread only: the audio thread touches a band's
+                          * filter after adopting a voice that needed it, so
+                          * the inbox ring orders the design before */
     fg_abe_fir *fir;     /* [2 (plain, shadowed)][2 ears] */
     fg_iir shelf[FG_BUS_PLAIN][2];
     fg_air air;
