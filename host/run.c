@@ -1,0 +1,289 @@
+/* fulgur run: the options, the set-up, three threads, the report. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "commands.h"
+#include "run_clock.h"
+
+static const char usage[] =
+    "usage: fulgur run SCENE.json [--audio null|wav:FILE|raw:-] [--block 64|128|256|512]\n"
+    "                  [--rate 44100|48000|96000] [--seconds S] [--report FILE]\n"
+    "                  [--voices N] [--frame-rate HZ]\n"
+    "Runs the scene as a VR application would: a frame thread moves the listener at\n"
+    "--frame-rate (90 Hz), a sim thread builds and posts each discharge at its time,\n"
+    "an audio thread pulls blocks through a driver:\n"
+    "  null     a clock-paced device: one block per block period, in real time (default)\n"
+    "  wav:FILE 32-bit float WAV, as fast as possible, deterministic\n"
+    "  raw:-    interleaved float32 to stdout, deterministic:\n"
+    "           fulgur run SCENE --audio raw:- | aplay -f FLOAT_LE -c2 -r48000\n"
+    "Block and rate default to the scene's; --seconds to the scene's duration, else\n"
+    "until every discharge has sounded. --voices sizes the engine's pool (64).\n"
+    "Prints a JSON report (timing, post-to-adoption latency, late events) to stdout,\n"
+    "to stderr with raw:-, or to --report FILE.\n"
+    "Exit: 0 done, 1 runtime error, 2 bad arguments or scene.\n";
+
+/* One of allowed[0..count), or with count 0 any of 1..4096. */
+static int parse_u32(const char *text, const uint32_t *allowed, size_t count, uint32_t *out)
+{
+    char *end;
+    unsigned long v = strtoul(text, &end, 10);
+    bool ok = !*end && end != text && (count == 0 && v >= 1 && v <= 4096);
+    for (size_t i = 0; i < count; i++)
+        ok |= !*end && end != text && v == allowed[i];
+    if (ok)
+        *out = (uint32_t)v;
+    return ok ? 0 : -1;
+}
+
+static int parse_seconds(const char *text, double lo, double hi, double *out)
+{
+    char *end;
+    double v = strtod(text, &end);
+    if (*end || end == text || !(v > lo) || !(v <= hi))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+static int parse_audio(const char *text, run_options *o)
+{
+    if (strcmp(text, "null") == 0) {
+        o->audio = RUN_AUDIO_NULL;
+    } else if (strcmp(text, "raw:-") == 0) {
+        o->audio = RUN_AUDIO_RAW;
+    } else if (strncmp(text, "wav:", 4) == 0 && text[4]) {
+        o->audio = RUN_AUDIO_WAV;
+        o->wav_path = text + 4;
+    } else {
+        return -1;
+    }
+    return 0;
+}
+
+/* Returns 0, 1 for --help, -1 with a message printed. */
+static int parse_args(int argc, char **argv, run_options *o)
+{
+    static const uint32_t blocks[] = {64, 128, 256, 512};
+    static const uint32_t rates[] = {44100, 48000, 96000};
+    *o = (run_options){.audio = RUN_AUDIO_NULL, .frame_hz = 90};
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        uint32_t rate = 0;
+        int bad = 0;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+            return 1;
+        if (a[0] != '-') {
+            bad = o->scene_path != NULL;
+            o->scene_path = a;
+            if (!bad)
+                continue;
+        } else if (!v) {
+            bad = 1;
+        } else if (strcmp(a, "--audio") == 0) {
+            bad = parse_audio(v, o);
+        } else if (strcmp(a, "--block") == 0) {
+            bad = parse_u32(v, blocks, 4, &o->block_frames);
+        } else if (strcmp(a, "--rate") == 0) {
+            bad = parse_u32(v, rates, 3, &rate);
+            o->rate_hz = rate;
+        } else if (strcmp(a, "--seconds") == 0) {
+            bad = parse_seconds(v, 0, SCENE_MAX_DURATION_S, &o->seconds);
+        } else if (strcmp(a, "--frame-rate") == 0) {
+            bad = parse_seconds(v, 0, 1000, &o->frame_hz);
+        } else if (strcmp(a, "--voices") == 0) {
+            bad = parse_u32(v, NULL, 0, &o->voices);
+        } else if (strcmp(a, "--report") == 0) {
+            o->report_path = v;
+        } else {
+            bad = 1;
+        }
+        if (bad) {
+            fprintf(stderr, "fulgur run: bad argument \"%s%s%s\"\n%s", a, v ? " " : "",
+                    v ? v : "", usage);
+            return -1;
+        }
+        i++;
+    }
+    if (!o->scene_path) {
+        fputs(usage, stderr);
+        return -1;
+    }
+    return 0;
+}
+
+/* Allocates what the threads use; the engine last. */
+static int set_up(run_ctx *run, char *err, size_t err_size)
+{
+    const scene *s = run->s;
+    size_t n = s->discharge_count ? s->discharge_count : 1;
+    run->paced = run->opt.audio == RUN_AUDIO_NULL;
+    run->block_frames = run->opt.block_frames ? run->opt.block_frames : s->block_frames;
+    run->rate_hz = run->opt.rate_hz ? run->opt.rate_hz : s->sample_rate_hz;
+    double seconds = run->opt.seconds ? run->opt.seconds : s->duration_s;
+    run->until_done = seconds == 0;
+    run->limit_frames = (uint64_t)llround((seconds ? seconds : SCENE_MAX_DURATION_S) * run->rate_hz);
+    run->order = scene_post_order(s);
+    run->post_frame = calloc(n, sizeof *run->post_frame);
+    run->post_ns = calloc(n, sizeof *run->post_ns);
+    run->post_event_s = calloc(n, sizeof *run->post_event_s);
+    run->post_index = calloc(n, sizeof *run->post_index);
+    run->adopt_frame = calloc(n, sizeof *run->adopt_frame);
+    run->adopt_ns = calloc(n, sizeof *run->adopt_ns);
+    for (uint32_t ch = 0; ch < s->channels; ch++)
+        run->planes[ch] = calloc(run->block_frames, sizeof(float));
+    /* callback and post call to 1 us up to 50 ms; jitter to 10 us up to 1 s */
+    int hists = run_hist_init(&run->callback, 1e-6, 50000) |
+                run_hist_init(&run->post_call, 1e-6, 50000) |
+                run_hist_init(&run->jitter, 1e-5, 100000);
+    if (!run->order || !run->post_frame || !run->post_ns || !run->post_event_s ||
+        !run->post_index || !run->adopt_frame || !run->adopt_ns || !run->planes[0] ||
+        (s->channels == 2 && !run->planes[1]) || hists) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    if (run_gate_init(&run->gate) != 0) {
+        snprintf(err, err_size, "cannot create the lock-step gate");
+        return -1;
+    }
+    fg_engine_config cfg;
+    scene_engine_config(s, &cfg);
+    cfg.sample_rate_hz = run->rate_hz;
+    cfg.max_block_frames = run->block_frames;
+    cfg.max_voices = run->opt.voices;
+    fg_result r = fg_engine_create(&cfg, &run->engine);
+    if (r != FG_OK) {
+        snprintf(err, err_size, "engine: %s", fg_result_str(r));
+        return -1;
+    }
+    return 0;
+}
+
+static void tear_down(run_ctx *run)
+{
+    fg_engine_destroy(run->engine);
+    run_gate_deinit(&run->gate);
+    free(run->order);
+    free(run->post_frame);
+    free(run->post_ns);
+    free(run->post_event_s);
+    free(run->post_index);
+    free(run->adopt_frame);
+    free(run->adopt_ns);
+    free(run->planes[0]);
+    free(run->planes[1]);
+    run_hist_deinit(&run->callback);
+    run_hist_deinit(&run->post_call);
+    run_hist_deinit(&run->jitter);
+}
+
+/* Starts the three threads and joins them. Returns -1 with a message when
+ * one could not start (the others are stopped and joined). */
+static int run_threads(run_ctx *run, char *err, size_t err_size)
+{
+    void *(*const bodies[3])(void *) = {run_frame_thread, run_sim_thread, run_audio_thread};
+    pthread_t threads[3];
+    int started = 0;
+    run->start_ns = run_now_ns();
+    while (started < 3 && pthread_create(&threads[started], NULL, bodies[started], run) == 0)
+        started++;
+    if (started < 3)
+        run_stop(run);
+    for (int i = 0; i < started; i++)
+        pthread_join(threads[i], NULL);
+    if (started < 3) {
+        snprintf(err, err_size, "cannot start the threads");
+        return -1;
+    }
+    return 0;
+}
+
+static int write_report(const run_ctx *run, double wall_s, char *err, size_t err_size)
+{
+    char *text = run_report_json(run, wall_s);
+    if (!text) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    FILE *to = run->opt.audio == RUN_AUDIO_RAW ? stderr : stdout;
+    if (run->opt.report_path && !(to = fopen(run->opt.report_path, "w"))) {
+        snprintf(err, err_size, "%s: cannot create", run->opt.report_path);
+        free(text);
+        return -1;
+    }
+    int bad = fprintf(to, "%s\n", text) < 0;
+    bad |= run->opt.report_path ? fclose(to) != 0 : fflush(to) != 0;
+    free(text);
+    if (bad)
+        snprintf(err, err_size, "writing the report failed");
+    return bad ? -1 : 0;
+}
+
+static int run_scene(run_ctx *run)
+{
+    char err[512] = "";
+    int ok = set_up(run, err, sizeof err) == 0 &&
+             run_driver_start(&run->driver, run->opt.audio, run->opt.wav_path, run->rate_hz,
+                              run->s->channels, run->block_frames, (float)run->s->gain, err,
+                              sizeof err) == 0;
+    if (!ok) {
+        tear_down(run);
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_RUNTIME;
+    }
+    uint64_t t0 = run_now_ns();
+    ok = run_threads(run, err, sizeof err) == 0;
+    double wall_s = (double)(run_now_ns() - t0) * 1e-9;
+    if (ok && run->sim_error[0]) {
+        snprintf(err, sizeof err, "%s", run->sim_error);
+        ok = 0;
+    } else if (ok && run->render_result != FG_OK) {
+        snprintf(err, sizeof err, "render at frame %llu: %s",
+                 (unsigned long long)run->frames_out, fg_result_str(run->render_result));
+        ok = 0;
+    } else if (ok && run->audio_error[0]) {
+        snprintf(err, sizeof err, "%s", run->audio_error);
+        ok = 0;
+    }
+    char stop_err[512];
+    if (run_driver_stop(&run->driver, ok, stop_err, sizeof stop_err) != 0 && ok) {
+        snprintf(err, sizeof err, "%s", stop_err);
+        ok = 0;
+    }
+    if (ok)
+        ok = write_report(run, wall_s, err, sizeof err) == 0;
+    tear_down(run);
+    if (!ok) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_RUNTIME;
+    }
+    return CLI_OK;
+}
+
+int run_main(int argc, char **argv)
+{
+    run_ctx *run = calloc(1, sizeof *run);
+    if (!run) {
+        fputs("fulgur: out of memory\n", stderr);
+        return CLI_RUNTIME;
+    }
+    int rc = parse_args(argc, argv, &run->opt);
+    if (rc != 0) {
+        if (rc > 0)
+            fputs(usage, stdout);
+        free(run);
+        return rc > 0 ? CLI_OK : CLI_USAGE;
+    }
+    char err[512];
+    scene s;
+    if (scene_load(run->opt.scene_path, &s, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        free(run);
+        return CLI_USAGE;
+    }
+    run->s = &s;
+    rc = run_scene(run);
+    scene_deinit(&s);
+    free(run);
+    return rc;
+}
