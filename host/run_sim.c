@@ -75,5 +75,6 @@ void *run_sim_thread(void *arg)
         }
         run_wait_engine_past(run, now);
     }
+    fg_engine_collect(run->engine); /* what the last blocks finished */
     return NULL;
 }
