@@ -28,7 +28,9 @@ static int post_due(run_ctx *run, uint64_t now, size_t *next)
         if (scene_build_discharge(s, i, run->sim_error, sizeof run->sim_error) != 0)
             return -1;
         const scene_discharge *d = &s->discharges[i];
-        if ((double)now < d->time_s * run->rate_hz)
+        /* at the run's end nothing more is rendered: posting would only
+         * race the audio thread's stop */
+        if ((double)now < d->time_s * run->rate_hz || now >= run->limit_frames)
             return 0;
         fg_discharge post;
         scene_discharge_post(d, &post);
