@@ -21,7 +21,8 @@ static const char usage[] =
     "until every discharge has sounded. --voices sizes the engine's pool (64).\n"
     "Prints a JSON report (timing, post-to-adoption latency, late events) to stdout,\n"
     "to stderr with raw:-, or to --report FILE.\n"
-    "Exit: 0 done, 1 runtime error, 2 bad arguments or scene.\n";
+    "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (a generator's error is\n"
+    "found when the sim thread builds that discharge: no report, no WAV).\n";
 
 /* One of allowed[0..count), or with count 0 any of 1..4096. */
 static int parse_u32(const char *text, const uint32_t *allowed, size_t count, uint32_t *out)
@@ -36,11 +37,12 @@ static int parse_u32(const char *text, const uint32_t *allowed, size_t count, ui
     return ok ? 0 : -1;
 }
 
-static int parse_seconds(const char *text, double lo, double hi, double *out)
+/* A number in (0, hi]. */
+static int parse_positive(const char *text, double hi, double *out)
 {
     char *end;
     double v = strtod(text, &end);
-    if (*end || end == text || !(v > lo) || !(v <= hi))
+    if (*end || end == text || !(v > 0) || !(v <= hi))
         return -1;
     *out = v;
     return 0;
@@ -88,9 +90,9 @@ static int parse_args(int argc, char **argv, run_options *o)
             bad = parse_u32(v, rates, 3, &rate);
             o->rate_hz = rate;
         } else if (strcmp(a, "--seconds") == 0) {
-            bad = parse_seconds(v, 0, SCENE_MAX_DURATION_S, &o->seconds);
+            bad = parse_positive(v, SCENE_MAX_DURATION_S, &o->seconds);
         } else if (strcmp(a, "--frame-rate") == 0) {
-            bad = parse_seconds(v, 0, 1000, &o->frame_hz);
+            bad = parse_positive(v, 1000, &o->frame_hz);
         } else if (strcmp(a, "--voices") == 0) {
             bad = parse_u32(v, NULL, 0, &o->voices);
         } else if (strcmp(a, "--report") == 0) {
@@ -127,7 +129,6 @@ static int set_up(run_ctx *run, char *err, size_t err_size)
     run->post_frame = calloc(n, sizeof *run->post_frame);
     run->post_ns = calloc(n, sizeof *run->post_ns);
     run->post_event_s = calloc(n, sizeof *run->post_event_s);
-    run->post_index = calloc(n, sizeof *run->post_index);
     run->adopt_frame = calloc(n, sizeof *run->adopt_frame);
     run->adopt_ns = calloc(n, sizeof *run->adopt_ns);
     for (uint32_t ch = 0; ch < s->channels; ch++)
@@ -137,7 +138,7 @@ static int set_up(run_ctx *run, char *err, size_t err_size)
                 run_hist_init(&run->post_call, 1e-6, 50000) |
                 run_hist_init(&run->jitter, 1e-5, 100000);
     if (!run->order || !run->post_frame || !run->post_ns || !run->post_event_s ||
-        !run->post_index || !run->adopt_frame || !run->adopt_ns || !run->planes[0] ||
+        !run->adopt_frame || !run->adopt_ns || !run->planes[0] ||
         (s->channels == 2 && !run->planes[1]) || hists) {
         snprintf(err, err_size, "out of memory");
         return -1;
@@ -167,7 +168,6 @@ static void tear_down(run_ctx *run)
     free(run->post_frame);
     free(run->post_ns);
     free(run->post_event_s);
-    free(run->post_index);
     free(run->adopt_frame);
     free(run->adopt_ns);
     free(run->planes[0]);
@@ -234,8 +234,10 @@ static int run_scene(run_ctx *run)
     uint64_t t0 = run_now_ns();
     ok = run_threads(run, err, sizeof err) == 0;
     double wall_s = (double)(run_now_ns() - t0) * 1e-9;
+    int fail_rc = CLI_RUNTIME;
     if (ok && run->sim_error[0]) {
         snprintf(err, sizeof err, "%s", run->sim_error);
+        fail_rc = run->sim_error_in_scene ? CLI_USAGE : CLI_RUNTIME;
         ok = 0;
     } else if (ok && run->render_result != FG_OK) {
         snprintf(err, sizeof err, "render at frame %llu: %s",
@@ -255,7 +257,7 @@ static int run_scene(run_ctx *run)
     tear_down(run);
     if (!ok) {
         fprintf(stderr, "fulgur: %s\n", err);
-        return CLI_RUNTIME;
+        return fail_rc;
     }
     return CLI_OK;
 }

@@ -85,11 +85,11 @@ typedef struct run_ctx {
     uint64_t *post_frame;     /* engine clock at post, frames */
     uint64_t *post_ns;        /* wall clock at post */
     double *post_event_s;     /* the discharge's time */
-    size_t *post_index;       /* the discharge posted */
     uint64_t refused;         /* posts refused for a full pool or queue */
     size_t dropped;           /* discharges given up after RUN_RETRY_LIMIT_S */
     run_hist post_call;       /* fg_engine_post's own duration */
     char sim_error[512];      /* a build or post error ends the run */
+    bool sim_error_in_scene;  /* ... and it was the scene's fault (a generator's) */
 
     /* audio thread's */
     run_driver driver;

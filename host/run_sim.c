@@ -25,8 +25,10 @@ static int post_due(run_ctx *run, uint64_t now, size_t *next)
     scene *s = run->s;
     for (; *next < s->discharge_count; ++*next) {
         size_t i = run->order[*next];
-        if (scene_build_discharge(s, i, run->sim_error, sizeof run->sim_error) != 0)
+        if (scene_build_discharge(s, i, run->sim_error, sizeof run->sim_error) != 0) {
+            run->sim_error_in_scene = true;
             return -1;
+        }
         const scene_discharge *d = &s->discharges[i];
         /* at the run's end nothing more is rendered: posting would only
          * race the audio thread's stop */
@@ -42,7 +44,6 @@ static int post_due(run_ctx *run, uint64_t now, size_t *next)
             run->post_frame[k] = now;
             run->post_ns[k] = t0;
             run->post_event_s[k] = d->time_s;
-            run->post_index[k] = i;
         } else if (refused_for_room(r)) {
             run->refused++;
             if ((double)now / run->rate_hz - d->time_s <= RUN_RETRY_LIMIT_S)

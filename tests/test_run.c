@@ -177,6 +177,28 @@ static void test_lifecycle(void **state)
     cJSON_Delete(r);
 }
 
+/* Bad options: exit 2, and no WAV is left behind. */
+static void test_bad_arguments(void **state)
+{
+    (void)state;
+    static const char *const bad[] = {
+        "--block 100", "--rate 22050", "--seconds 0", "--seconds nan", "--audio wav:",
+        "--audio pulse", "--voices 0", "--frame-rate -1", "--block", "--unknown 1",
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char cmd[1024];
+        snprintf(cmd, sizeof cmd,
+                 "'%s' run '%s/run_storm.json' --audio 'wav:%s/bad.wav' %s 2>/dev/null >/dev/null",
+                 fulgur, scenes, dir, bad[i]);
+        int status = system(cmd);
+        assert_true(WIFEXITED(status));
+        if (WEXITSTATUS(status) != 2)
+            fail_msg("\"%s\": exit %d, not 2", bad[i], WEXITSTATUS(status));
+        snprintf(cmd, sizeof cmd, "%s/bad.wav", dir);
+        assert_int_equal(access(cmd, F_OK), -1);
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 3) {
@@ -193,6 +215,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_near_sparks_late),
         cmocka_unit_test(test_burst),
         cmocka_unit_test(test_lifecycle),
+        cmocka_unit_test(test_bad_arguments),
     };
     int failed = cmocka_run_group_tests(tests, NULL, NULL);
     char cmd[128];
