@@ -108,6 +108,13 @@ typedef struct run_ctx {
     run_hist jitter;          /* wake-up minus deadline, paced only */
 } run_ctx;
 
+/* The --help text. */
+extern const char run_usage[];
+
+/* Reads the arguments after "run" (argv[0]). Returns 0, 1 for --help, or -1
+ * with the message and usage printed to stderr. */
+int run_parse_options(int argc, char **argv, run_options *o);
+
 void *run_frame_thread(void *arg);
 void *run_sim_thread(void *arg);
 void *run_audio_thread(void *arg);
