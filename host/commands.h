@@ -12,5 +12,6 @@ enum {
 
 int render_main(int argc, char **argv);
 int analyze_main(int argc, char **argv);
+int run_main(int argc, char **argv);
 
 #endif

@@ -10,6 +10,7 @@ static const struct {
     const char *summary;
 } commands[] = {
     {"render", render_main, "render a scene to a 32-bit float WAV through the real-time engine"},
+    {"run", run_main, "run a scene in real time, as a VR application would, and report timing as JSON"},
     {"analyze", analyze_main, "write a WAV's waveform envelope and spectrogram for gnuplot"},
 };
 

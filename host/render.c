@@ -9,6 +9,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "audio_file.h"
 #include "commands.h"
 #include "scene.h"
 #include "temp_file.h"
@@ -23,16 +24,10 @@ static const char usage[] =
     "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n"
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
 
-/* A discharge's place in the posting order. */
-typedef struct post_slot {
-    double time_s;
-    size_t index;
-} post_slot;
-
 typedef struct render_job {
     const scene *s;
     fg_engine *engine;
-    post_slot *order;       /* the discharges by emit time, then index */
+    size_t *order;          /* the discharge indices by emit time, then index */
     size_t next;            /* the next of order to post */
     float *planes[2];
     float *interleaved;
@@ -47,37 +42,22 @@ static double now_s(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static int by_time(const void *a, const void *b)
-{
-    const post_slot *x = a, *y = b;
-    if (x->time_s != y->time_s)
-        return x->time_s < y->time_s ? -1 : 1;
-    return (x->index > y->index) - (x->index < y->index);
-}
-
 static int create_engine(render_job *job, char *err, size_t err_size)
 {
     const scene *s = job->s;
     for (size_t i = 0; i < s->discharge_count; i++)
         job->segments += s->discharges[i].node_count - 1;
-    fg_engine_config cfg = {
-        .sample_rate_hz = s->sample_rate_hz,
-        .max_block_frames = s->block_frames,
-        .channels = s->channels,
-        .max_voices = (uint32_t)s->discharge_count,
-        .segment_capacity = job->segments > UINT32_MAX ? UINT32_MAX : (uint32_t)job->segments,
-        .speed_of_sound_m_s = s->speed_of_sound_m_s,
-        .air_temperature_k = s->temperature_c + 273.15,
-        .air_humidity_pct = s->humidity_pct,
-        .air_pressure_kpa = s->pressure_kpa,
-    };
+    fg_engine_config cfg;
+    scene_engine_config(s, &cfg);
+    cfg.max_voices = (uint32_t)s->discharge_count;
+    cfg.segment_capacity = job->segments > UINT32_MAX ? UINT32_MAX : (uint32_t)job->segments;
     fg_result r = fg_engine_create(&cfg, &job->engine);
     if (r != FG_OK) {
         snprintf(err, err_size, "engine for %zu discharges and %zu segments: %s",
                  s->discharge_count, job->segments, fg_result_str(r));
         return -1;
     }
-    job->order = malloc(s->discharge_count * sizeof *job->order);
+    job->order = scene_post_order(s);
     job->interleaved = malloc((size_t)s->block_frames * s->channels * sizeof(float));
     for (uint32_t ch = 0; ch < s->channels; ch++)
         job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float));
@@ -86,9 +66,6 @@ static int create_engine(render_job *job, char *err, size_t err_size)
         snprintf(err, err_size, "out of memory");
         return -1;
     }
-    for (size_t i = 0; i < s->discharge_count; i++)
-        job->order[i] = (post_slot){s->discharges[i].time_s, i};
-    qsort(job->order, s->discharge_count, sizeof *job->order, by_time);
     return 0;
 }
 
@@ -96,24 +73,12 @@ static int create_engine(render_job *job, char *err, size_t err_size)
 static int post_due(render_job *job, double horizon_s, char *err, size_t err_size)
 {
     for (; job->next < job->s->discharge_count; job->next++) {
-        size_t i = job->order[job->next].index;
+        size_t i = job->order[job->next];
         const scene_discharge *d = &job->s->discharges[i];
         if (d->time_s >= horizon_s)
             break;
-        fg_discharge post = {
-            .nodes = d->nodes,
-            .node_count = d->node_count,
-            .sound = d->sound,
-            .emit_time_s = d->time_s,
-            .strokes = d->strokes,
-            .continuous = d->continuous,
-            .repeat_min_s = d->repeat_min_s,
-            .repeat_max_s = d->repeat_max_s,
-            .duration_s = d->duration_s,
-            .seed = d->seed,
-            .propagation = d->propagation,
-            .model = d->model,
-        };
+        fg_discharge post;
+        scene_discharge_post(d, &post);
         fg_result r = fg_engine_post(job->engine, &post, NULL);
         if (r != FG_OK) {
             snprintf(err, err_size, "discharges[%zu]: the engine refused it: %s", i,
@@ -126,11 +91,7 @@ static int post_due(render_job *job, double horizon_s, char *err, size_t err_siz
 
 static int write_block(render_job *job, uint32_t frames, char *err, size_t err_size)
 {
-    uint32_t channels = job->s->channels;
-    float gain = (float)job->s->gain;
-    for (uint32_t f = 0; f < frames; f++)
-        for (uint32_t ch = 0; ch < channels; ch++)
-            job->interleaved[(size_t)f * channels + ch] = job->planes[ch][f] * gain;
+    audio_interleave(job->planes, job->s->channels, frames, (float)job->s->gain, job->interleaved);
     if (sf_writef_float(job->wav, job->interleaved, frames) != frames) {
         snprintf(err, err_size, "writing the WAV: %s", sf_strerror(job->wav));
         return -1;
@@ -183,20 +144,9 @@ static int run(render_job *job, uint64_t *frames_out, char *err, size_t err_size
 
 static int open_wav(render_job *job, temp_file *out, char *err, size_t err_size)
 {
-    SF_INFO info = {
-        .samplerate = (int)job->s->sample_rate_hz,
-        .channels = (int)job->s->channels,
-        .format = SF_FORMAT_WAV | SF_FORMAT_FLOAT,
-    };
-    job->wav = sf_open_fd(out->fd, SFM_WRITE, &info, SF_FALSE);
-    if (!job->wav) {
-        snprintf(err, err_size, "%s: %s", out->path, sf_strerror(NULL));
-        return -1;
-    }
-    /* the PEAK chunk carries a timestamp: without it equal renders are
-     * byte-identical */
-    sf_command(job->wav, SFC_SET_ADD_PEAK_CHUNK, NULL, SF_FALSE);
-    return 0;
+    job->wav = audio_wav_open(out->fd, out->path, job->s->sample_rate_hz, job->s->channels, err,
+                              err_size);
+    return job->wav ? 0 : -1;
 }
 
 static void release(render_job *job)

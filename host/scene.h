@@ -76,6 +76,11 @@ int scene_load(const char *path, scene *out, char *err, size_t err_size);
  * then as parsed. */
 int scene_build(scene *s, char *err, size_t err_size);
 
+/* Builds one discharge's tree (generation happens on the calling thread);
+ * nothing to do for an explicit tree or a discharge already built. Returns 0,
+ * or -1 with a message naming the generator's path; d is then unchanged. */
+int scene_build_discharge(scene *s, size_t index, char *err, size_t err_size);
+
 /* Frees what parse and build allocated; zeroes *s. NULL is a no-op. */
 void scene_deinit(scene *s);
 
@@ -83,6 +88,18 @@ void scene_deinit(scene *s);
  * normalised lerp, held before the first and after the last pose; velocity
  * is the path's slope (0 when held). */
 void scene_listener_at(const scene *s, double t_s, fg_listener *out);
+
+/* The engine configuration the scene asks for (rate, block, channels, the
+ * air); voices and segments are left at 0 (the defaults) for the caller. */
+void scene_engine_config(const scene *s, fg_engine_config *out);
+
+/* The post for a built discharge: its tree (borrowed from d), sound and
+ * propagation, emit time d->time_s. */
+void scene_discharge_post(const scene_discharge *d, fg_discharge *out);
+
+/* The discharge indices by time, then index: the posting order. NULL when
+ * out of memory; the caller frees. */
+size_t *scene_post_order(const scene *s);
 
 /* The seed a discharge gets when it names none: a hash of the scene's seed
  * and the discharge's index. */

@@ -55,13 +55,18 @@ done:
     return rc;
 }
 
+int scene_build_discharge(scene *s, size_t index, char *err, size_t err_size)
+{
+    scene_discharge *d = &s->discharges[index];
+    if (!d->generator || d->nodes)
+        return 0;
+    return generate(s, index, d, err, err_size);
+}
+
 int scene_build(scene *s, char *err, size_t err_size)
 {
     for (size_t i = 0; i < s->discharge_count; i++) {
-        scene_discharge *d = &s->discharges[i];
-        if (!d->generator)
-            continue;
-        if (generate(s, i, d, err, err_size) == 0)
+        if (scene_build_discharge(s, i, err, err_size) == 0)
             continue;
         for (size_t k = 0; k < i; k++) { /* back to the parsed state */
             if (s->discharges[k].generator) {

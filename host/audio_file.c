@@ -1,0 +1,31 @@
+/* Interleaving and the WAV writer's settings. */
+#include <stdio.h>
+
+#include "audio_file.h"
+
+void audio_interleave(float *const *planes, uint32_t channels, uint32_t frames, float gain,
+                      float *out)
+{
+    for (uint32_t f = 0; f < frames; f++)
+        for (uint32_t ch = 0; ch < channels; ch++)
+            out[(size_t)f * channels + ch] = planes[ch][f] * gain;
+}
+
+SNDFILE *audio_wav_open(int fd, const char *path, double rate_hz, uint32_t channels, char *err,
+                        size_t err_size)
+{
+    SF_INFO info = {
+        .samplerate = (int)rate_hz,
+        .channels = (int)channels,
+        .format = SF_FORMAT_WAV | SF_FORMAT_FLOAT,
+    };
+    SNDFILE *wav = sf_open_fd(fd, SFM_WRITE, &info, SF_FALSE);
+    if (!wav) {
+        snprintf(err, err_size, "%s: %s", path, sf_strerror(NULL));
+        return NULL;
+    }
+    /* the PEAK chunk carries a timestamp: without it equal renders are
+     * byte-identical */
+    sf_command(wav, SFC_SET_ADD_PEAK_CHUNK, NULL, SF_FALSE);
+    return wav;
+}

@@ -1,0 +1,78 @@
+/* The null, WAV and raw drivers. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "audio_file.h"
+#include "run_driver.h"
+
+int run_driver_start(run_driver *d, run_audio_kind kind, const char *path, double rate_hz,
+                     uint32_t channels, uint32_t block_frames, float gain, char *err,
+                     size_t err_size)
+{
+    *d = (run_driver){.kind = kind, .channels = channels, .gain = gain};
+    if (kind == RUN_AUDIO_NULL)
+        return 0;
+    d->interleaved = malloc((size_t)block_frames * channels * sizeof(float));
+    if (!d->interleaved) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    if (kind == RUN_AUDIO_RAW)
+        return 0;
+    if (temp_file_open(&d->file, path, err, err_size) != 0)
+        goto fail;
+    d->wav = audio_wav_open(d->file.fd, path, rate_hz, channels, err, err_size);
+    if (!d->wav) {
+        temp_file_abort(&d->file);
+        goto fail;
+    }
+    return 0;
+fail:
+    free(d->interleaved);
+    d->interleaved = NULL;
+    return -1;
+}
+
+int run_driver_write(run_driver *d, float *const *planes, uint32_t frames, char *err,
+                     size_t err_size)
+{
+    if (d->kind == RUN_AUDIO_NULL)
+        return 0;
+    audio_interleave(planes, d->channels, frames, d->gain, d->interleaved);
+    if (d->kind == RUN_AUDIO_RAW) {
+        if (fwrite(d->interleaved, sizeof(float) * d->channels, frames, stdout) != frames) {
+            snprintf(err, err_size, "writing raw samples to stdout failed");
+            return -1;
+        }
+        return 0;
+    }
+    if (sf_writef_float(d->wav, d->interleaved, frames) != frames) {
+        snprintf(err, err_size, "writing the WAV: %s", sf_strerror(d->wav));
+        return -1;
+    }
+    return 0;
+}
+
+int run_driver_stop(run_driver *d, bool keep, char *err, size_t err_size)
+{
+    int rc = 0;
+    if (d->kind == RUN_AUDIO_RAW && fflush(stdout) != 0) {
+        snprintf(err, err_size, "writing raw samples to stdout failed");
+        rc = -1;
+    }
+    if (d->kind == RUN_AUDIO_WAV) {
+        if (sf_close(d->wav) != 0 && keep) {
+            snprintf(err, err_size, "%s: closing the WAV failed", d->file.path);
+            keep = false;
+            rc = -1;
+        }
+        if (keep)
+            rc = temp_file_commit(&d->file, err, err_size);
+        else
+            temp_file_abort(&d->file);
+    }
+    free(d->interleaved);
+    memset(d, 0, sizeof *d);
+    return rc;
+}
