@@ -120,7 +120,7 @@ static void run(LV2_Handle instance, uint32_t frames)
     note_controls c;
     read_controls(p, &c);
     read_midi(p, &c);
-    float gain = (float)pow(10, control(p, PORT_GAIN, -60, 24) / 20);
+    float gain = (float)pow(10, control(p, PORT_GAIN, -80, 20) / 20);
     float *out[2] = {p->ports[PORT_OUT_LEFT], p->ports[PORT_OUT_RIGHT]};
     for (uint32_t done = 0; done < frames;) {
         uint32_t n = frames - done < p->max_block_frames ? frames - done : p->max_block_frames;
