@@ -38,8 +38,6 @@ struct lv2_host {
         LV2_Atom_Sequence seq;
         unsigned char bytes[MIDI_BYTES];
     } midi;
-    char *uris[MAX_URIDS];
-    uint32_t uri_count;
     LV2_URID_Map map;
     LV2_URID_Unmap unmap;
     LV2_Worker_Schedule schedule;
@@ -53,22 +51,28 @@ struct lv2_host {
     unsigned long worker_allocs;
 };
 
+/* One URID table for the process, as a host has: a state saved by one
+ * instance carries URIDs that another must read alike. Called from the main
+ * thread only (instantiate, state, lv2_host_midi). */
+static char *uris[MAX_URIDS];
+static uint32_t uri_count;
+
 static LV2_URID map_uri(LV2_URID_Map_Handle handle, const char *uri)
 {
-    lv2_host *h = handle;
-    for (uint32_t i = 0; i < h->uri_count; i++)
-        if (!strcmp(h->uris[i], uri))
+    (void)handle;
+    for (uint32_t i = 0; i < uri_count; i++)
+        if (!strcmp(uris[i], uri))
             return i + 1;
-    if (h->uri_count == MAX_URIDS)
+    if (uri_count == MAX_URIDS)
         return 0;
-    h->uris[h->uri_count] = strdup(uri);
-    return ++h->uri_count;
+    uris[uri_count] = strdup(uri);
+    return ++uri_count;
 }
 
 static const char *unmap_uri(LV2_URID_Unmap_Handle handle, LV2_URID urid)
 {
-    lv2_host *h = handle;
-    return urid >= 1 && urid <= h->uri_count ? h->uris[urid - 1] : NULL;
+    (void)handle;
+    return urid >= 1 && urid <= uri_count ? uris[urid - 1] : NULL;
 }
 
 /* [audio-thread] copies the request into the queue: no allocation */
@@ -182,8 +186,6 @@ void lv2_host_destroy(lv2_host *h)
         lilv_instance_free(h->instance);
     }
     lilv_world_free(h->world);
-    for (uint32_t i = 0; i < h->uri_count; i++)
-        free(h->uris[i]);
     free(h);
 }
 
