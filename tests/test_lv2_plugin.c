@@ -14,7 +14,7 @@
 
 #include <cmocka.h>
 
-#include "lv2_host.h"
+#include "lv2_fixture.h"
 
 #define BLOCK 256
 #define SECONDS 10
@@ -68,6 +68,7 @@ static void play(double rate_hz, run_result *out)
     out->left = calloc(out->frames, sizeof(float));
     out->right = calloc(out->frames, sizeof(float));
     out->rt_calls = 0;
+    out->worker_allocs = 0;
     for (size_t b = 0; b < blocks; b++) {
         size_t start = b * BLOCK;
         for (size_t i = 0; i < NOTES; i++) {
@@ -82,15 +83,13 @@ static void play(double rate_hz, run_result *out)
             if (off >= start && off < start + BLOCK)
                 lv2_host_midi(h, (uint32_t)(off - start), 0x80, n->key, 0);
         }
-        rt_guard_counts c = lv2_host_run(h, BLOCK, out->left + start, out->right + start);
-        out->rt_calls += rt_guard_total(&c);
-        lv2_host_work(h);
+        out->rt_calls += lv2_run_guarded(h, BLOCK, out->left + start, out->right + start);
+        lv2_work_on_thread(h, &out->worker_allocs);
     }
     out->work_calls = lv2_host_work_calls(h);
     out->responses = lv2_host_responses(h);
     out->discharges = lv2_host_get(h, "discharges");
     out->failures = lv2_host_get(h, "failures");
-    out->worker_allocs = lv2_host_worker_allocs(h);
     lv2_host_destroy(h);
 }
 

@@ -12,7 +12,7 @@
 
 #include <cmocka.h>
 
-#include "lv2_host.h"
+#include "lv2_fixture.h"
 
 #define RATE_HZ 48000.0
 #define BLOCK 256
@@ -28,9 +28,8 @@ static void play(lv2_host *h, int blocks, uint8_t key, float *out)
     for (int b = 0; b < blocks; b++) {
         if (key && b % 20 == 1)
             lv2_host_midi(h, 7, 0x90, key + (uint8_t)(b / 20), 100);
-        rt_guard_counts c = lv2_host_run(h, BLOCK, l, r);
-        assert_int_equal(rt_guard_total(&c), 0);
-        lv2_host_work(h);
+        assert_int_equal(lv2_run_guarded(h, BLOCK, l, r), 0);
+        lv2_work_on_thread(h, NULL);
         if (out) {
             memcpy(out + (size_t)b * 2 * BLOCK, l, sizeof l);
             memcpy(out + (size_t)b * 2 * BLOCK + BLOCK, r, sizeof r);

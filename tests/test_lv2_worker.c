@@ -11,7 +11,7 @@
 
 #include <cmocka.h>
 
-#include "lv2_host.h"
+#include "lv2_fixture.h"
 
 #define RATE_HZ 48000.0
 #define BLOCK 512
@@ -27,8 +27,7 @@ static float block_peak(const float *l, const float *r)
 static void run_block(lv2_host *h, float *peak)
 {
     float l[BLOCK], r[BLOCK];
-    rt_guard_counts c = lv2_host_run(h, BLOCK, l, r);
-    assert_int_equal(rt_guard_total(&c), 0);
+    assert_int_equal(lv2_run_guarded(h, BLOCK, l, r), 0);
     if (peak)
         *peak = block_peak(l, r);
 }
@@ -47,7 +46,7 @@ static void test_response_in_later_run(void **state)
     assert_int_equal(lv2_host_work_calls(h), 0);
     assert_true(lv2_host_get(h, "discharges") == 0);
     assert_true(peak == 0);
-    assert_int_equal(lv2_host_work(h), 1);
+    assert_int_equal(lv2_work_on_thread(h, NULL), 1);
     /* worked; the response waits for the next run */
     assert_int_equal(lv2_host_responses(h), 0);
     assert_true(lv2_host_get(h, "discharges") == 0);
@@ -59,7 +58,7 @@ static void test_response_in_later_run(void **state)
     /* a spark's note-off is worked but has nothing to answer */
     lv2_host_midi(h, 0, 0x80, 60, 0);
     run_block(h, NULL);
-    assert_int_equal(lv2_host_work(h), 1);
+    assert_int_equal(lv2_work_on_thread(h, NULL), 1);
     run_block(h, NULL);
     assert_int_equal(lv2_host_responses(h), 1);
 
@@ -68,7 +67,7 @@ static void test_response_in_later_run(void **state)
     lv2_host_set(h, "preset", 1);
     lv2_host_midi(h, 0, 0x90, 64, 127);
     run_block(h, NULL);
-    lv2_host_work(h);
+    lv2_work_on_thread(h, NULL);
     int blocks_with_sound = 0, blocks = (int)(0.5 * RATE_HZ / BLOCK);
     for (int b = 0; b < blocks; b++) {
         run_block(h, &peak);
@@ -78,7 +77,7 @@ static void test_response_in_later_run(void **state)
     assert_true(blocks_with_sound >= blocks / 5);
     lv2_host_midi(h, 0, 0x80, 64, 0);
     run_block(h, NULL);
-    assert_int_equal(lv2_host_work(h), 1);
+    assert_int_equal(lv2_work_on_thread(h, NULL), 1);
     run_block(h, NULL);
     assert_int_equal(lv2_host_responses(h), 3);
     assert_true(lv2_host_get(h, "discharges") == 2);
@@ -102,7 +101,7 @@ static void test_refused_notes_are_failures(void **state)
     for (uint8_t k = 0; k < 20; k++)
         lv2_host_midi(h, k, 0x90, 40 + k, 100);
     run_block(h, NULL);
-    assert_int_equal(lv2_host_work(h), 20);
+    assert_int_equal(lv2_work_on_thread(h, NULL), 20);
     run_block(h, NULL);
     float played = lv2_host_get(h, "discharges"), failed = lv2_host_get(h, "failures");
     assert_true(played + failed == 20);

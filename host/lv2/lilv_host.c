@@ -1,6 +1,6 @@
-/* A small lilv host for the LV2 tests: see lv2_host.h. */
+/* A small lilv host for fulgur.lv2: see lilv_host.h. */
 #define _POSIX_C_SOURCE 200809L /* strdup */
-#include <pthread.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,7 +11,7 @@
 #include <lv2/urid/urid.h>
 #include <lv2/worker/worker.h>
 
-#include "lv2_host.h"
+#include "lilv_host.h"
 
 #define PLUGIN_URI "urn:fulgur:lv2:instrument"
 #define MAX_PORTS 32
@@ -48,7 +48,6 @@ struct lv2_host {
     job requests[MAX_JOBS], responses[MAX_JOBS];
     unsigned request_count, response_count;
     unsigned work_calls, responses_given;
-    unsigned long worker_allocs;
 };
 
 /* One URID table for the process, as a host has: a state saved by one
@@ -100,16 +99,17 @@ static LV2_Worker_Status respond(LV2_Worker_Respond_Handle handle, uint32_t size
     return LV2_WORKER_SUCCESS;
 }
 
-static uint32_t port_index(const lv2_host *h, const char *symbol)
+/* The index of the control port named symbol, or NO_PORT. */
+#define NO_PORT UINT32_MAX
+static uint32_t control_index(const lv2_host *h, const char *symbol)
 {
     LilvNode *sym = lilv_new_string(h->world, symbol);
+    LilvNode *control = lilv_new_uri(h->world, LILV_URI_CONTROL_PORT);
     const LilvPort *port = lilv_plugin_get_port_by_symbol(h->plugin, sym);
+    int is_control = port && lilv_port_is_a(h->plugin, port, control);
     lilv_node_free(sym);
-    if (!port) {
-        fprintf(stderr, "lv2_host: no port '%s'\n", symbol);
-        abort();
-    }
-    return lilv_port_get_index(h->plugin, port);
+    lilv_node_free(control);
+    return is_control ? lilv_port_get_index(h->plugin, port) : NO_PORT;
 }
 
 /* Every control at its default, the MIDI sequence empty. */
@@ -189,64 +189,53 @@ void lv2_host_destroy(lv2_host *h)
     free(h);
 }
 
-void lv2_host_set(lv2_host *h, const char *symbol, float value)
+int lv2_host_set(lv2_host *h, const char *symbol, float value)
 {
-    h->controls[port_index(h, symbol)] = value;
+    uint32_t i = control_index(h, symbol);
+    if (i == NO_PORT)
+        return -1;
+    h->controls[i] = value;
+    return 0;
 }
 
 float lv2_host_get(const lv2_host *h, const char *symbol)
 {
-    return h->controls[port_index(h, symbol)];
+    uint32_t i = control_index(h, symbol);
+    return i == NO_PORT ? NAN : h->controls[i];
 }
 
-void lv2_host_midi(lv2_host *h, uint32_t frame, uint8_t status, uint8_t data1, uint8_t data2)
+int lv2_host_midi(lv2_host *h, uint32_t frame, uint8_t status, uint8_t data1, uint8_t data2)
 {
     struct {
         LV2_Atom_Event event;
         uint8_t msg[3];
     } ev = {{.time.frames = frame, .body = {3, map_uri(h, LV2_MIDI__MidiEvent)}},
             {status, data1, data2}};
-    if (!lv2_atom_sequence_append_event(&h->midi.seq, MIDI_BYTES - sizeof h->midi.seq.atom,
-                                        &ev.event))
-        abort();
+    return lv2_atom_sequence_append_event(&h->midi.seq, MIDI_BYTES - sizeof h->midi.seq.atom,
+                                          &ev.event)
+               ? 0
+               : -1;
 }
 
-rt_guard_counts lv2_host_run(lv2_host *h, uint32_t frames, float *left, float *right)
+void lv2_host_run(lv2_host *h, uint32_t frames, float *left, float *right)
 {
     lilv_instance_connect_port(h->instance, h->audio_ports[0], left);
     lilv_instance_connect_port(h->instance, h->audio_ports[1], right);
-    rt_guard_arm();
     for (unsigned i = 0; i < h->response_count; i++)
         h->worker->work_response(h->instance->lv2_handle, h->responses[i].size,
                                  h->responses[i].data);
     h->responses_given += h->response_count;
     h->response_count = 0;
     lilv_instance_run(h->instance, frames);
-    rt_guard_counts counts = rt_guard_disarm();
     lv2_atom_sequence_clear(&h->midi.seq);
-    return counts;
-}
-
-static void *worker_main(void *arg)
-{
-    lv2_host *h = arg;
-    rt_guard_arm();
-    for (unsigned i = 0; i < h->request_count; i++)
-        h->worker->work(h->instance->lv2_handle, respond, h, h->requests[i].size,
-                        h->requests[i].data);
-    rt_guard_counts counts = rt_guard_disarm();
-    h->worker_allocs += counts.alloc;
-    return NULL;
 }
 
 unsigned lv2_host_work(lv2_host *h)
 {
     unsigned n = h->request_count;
-    if (n == 0)
-        return 0;
-    pthread_t thread;
-    if (pthread_create(&thread, NULL, worker_main, h) != 0 || pthread_join(thread, NULL) != 0)
-        abort();
+    for (unsigned i = 0; i < n; i++)
+        h->worker->work(h->instance->lv2_handle, respond, h, h->requests[i].size,
+                        h->requests[i].data);
     h->work_calls += n;
     h->request_count = 0;
     return n;
@@ -254,13 +243,14 @@ unsigned lv2_host_work(lv2_host *h)
 
 unsigned lv2_host_work_calls(const lv2_host *h) { return h->work_calls; }
 unsigned lv2_host_responses(const lv2_host *h) { return h->responses_given; }
-unsigned long lv2_host_worker_allocs(const lv2_host *h) { return h->worker_allocs; }
 
 static const void *get_port_value(const char *symbol, void *user_data, uint32_t *size,
                                   uint32_t *type)
 {
     lv2_host *h = user_data;
-    uint32_t i = port_index(h, symbol);
+    uint32_t i = control_index(h, symbol);
+    if (i == NO_PORT)
+        return NULL;
     LilvNode *input = lilv_new_uri(h->world, LILV_URI_INPUT_PORT);
     int is_input = lilv_port_is_a(h->plugin, lilv_plugin_get_port_by_index(h->plugin, i), input);
     lilv_node_free(input);
@@ -273,8 +263,9 @@ static void set_port_value(const char *symbol, void *user_data, const void *valu
                            uint32_t type)
 {
     lv2_host *h = user_data;
-    if (size == sizeof(float) && type == map_uri(h, LV2_ATOM__Float))
-        memcpy(&h->controls[port_index(h, symbol)], value, sizeof(float));
+    uint32_t i = control_index(h, symbol);
+    if (i != NO_PORT && size == sizeof(float) && type == map_uri(h, LV2_ATOM__Float))
+        memcpy(&h->controls[i], value, sizeof(float));
 }
 
 LilvState *lv2_host_save(lv2_host *h)
