@@ -81,6 +81,21 @@ static void test_smpte(void **state)
     free(ev);
 }
 
+/* A header and a chunk of an unknown type: no events, no error. */
+static void test_no_tracks(void **state)
+{
+    (void)state;
+    const uint8_t empty[] = {'M', 'T', 'h', 'd', 0, 0, 0, 6, 0, 0, 0, 1, 1, 0xe0,
+                             'X', 'Y', 'Z', 'W', 0, 0, 0, 2, 7, 7};
+    write_file(empty, sizeof empty);
+    smf_event *ev;
+    size_t n = 99;
+    char err[256];
+    assert_int_equal(smf_read(PATH, &ev, &n, err, sizeof err), 0);
+    assert_int_equal(n, 0);
+    free(ev);
+}
+
 typedef struct bad_case {
     uint8_t bytes[40];
     size_t size;
@@ -131,6 +146,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_tempo_map),
         cmocka_unit_test(test_smpte),
+        cmocka_unit_test(test_no_tracks),
         cmocka_unit_test(test_refused),
     };
     int failed = cmocka_run_group_tests(tests, NULL, NULL);

@@ -23,12 +23,12 @@ typedef struct reader {
     size_t count, capacity;
     char *err;
     size_t err_size;
-    const char *path;
+    const char *name;   /* the file, for messages */
 } reader;
 
 static int fail(reader *r, const char *what, size_t track)
 {
-    snprintf(r->err, r->err_size, "%s: %s (track %zu)", r->path, what, track);
+    snprintf(r->err, r->err_size, "%s: %s (track %zu)", r->name, what, track);
     return -1;
 }
 
@@ -153,11 +153,19 @@ int smf_read(const char *path, smf_event **events, size_t *count, char *err, siz
     uint8_t *data = slurp(path, &size, err, err_size);
     if (!data)
         return -1;
-    reader r = {.p = data, .end = data + size, .err = err, .err_size = err_size, .path = path};
-    int ok = size >= 14 && !memcmp(data, "MThd", 4) && be32(data + 4) >= 6;
+    int result = smf_parse(data, size, path, events, count, err, err_size);
+    free(data);
+    return result;
+}
+
+int smf_parse(const uint8_t *data, size_t size, const char *name, smf_event **events,
+              size_t *count, char *err, size_t err_size)
+{
+    reader r = {.p = data, .end = data + size, .err = err, .err_size = err_size, .name = name};
+    int ok = size >= 14 && !memcmp(data, "MThd", 4) && be32(data + 4) >= 6 &&
+             be32(data + 4) <= size - 8;
     if (!ok) {
-        snprintf(err, err_size, "%s: not a Standard MIDI File (no MThd header)", path);
-        free(data);
+        snprintf(err, err_size, "%s: not a Standard MIDI File (no MThd header)", name);
         return -1;
     }
     unsigned format = (unsigned)(data[8] << 8 | data[9]), division = (unsigned)(data[12] << 8 | data[13]);
@@ -168,8 +176,7 @@ int smf_read(const char *path, smf_event **events, size_t *count, char *err, siz
     }
     if (format > 1 || (!(division & 0x8000) && division == 0) || ((division & 0x8000) && !tick_s)) {
         snprintf(err, err_size, "%s: format %u or division %u not supported (formats 0 and 1)",
-                 path, format, division);
-        free(data);
+                 name, format, division);
         return -1;
     }
     const uint8_t *p = data + 8 + be32(data + 4);
@@ -184,15 +191,15 @@ int smf_read(const char *path, smf_event **events, size_t *count, char *err, siz
             ok = read_track(&r, p + 8, p + 8 + len, track++) == 0;
         p += 8 + len;   /* chunks of other types are skipped, as the standard says */
     }
-    free(data);
     smf_event *out = ok ? malloc((r.count ? r.count : 1) * sizeof *out) : NULL;
     if (!out) {
         if (ok)
-            snprintf(err, err_size, "%s: out of memory", path);
+            snprintf(err, err_size, "%s: out of memory", name);
         free(r.events);
         return -1;
     }
-    qsort(r.events, r.count, sizeof *r.events, by_tick);
+    if (r.count)   /* no track, or empty ones: events is NULL, which qsort may not take */
+        qsort(r.events, r.count, sizeof *r.events, by_tick);
     double tempo_us = DEFAULT_TEMPO_US, t_s = 0;
     uint64_t last_tick = 0;
     size_t n = 0;

@@ -11,11 +11,17 @@ typedef struct smf_event {
     uint8_t status, data1, data2;
 } smf_event;
 
-/* Reads path's note-on, note-off, aftertouch, control-change and
- * pitch-bend messages of every track, merged in time order (ties keep the
- * file's order). *events is owned by the caller (free). Returns 0, or -1
- * with a message in err naming the file and what is wrong (not "MThd", a
- * truncated chunk, a running status with none before, ...). */
+/* Parses the file's bytes data[0..size): its note-on, note-off,
+ * aftertouch, control-change and pitch-bend messages of every track, merged
+ * in time order (ties keep the file's order). *events is owned by the
+ * caller (free). Returns 0, or -1 with a message in err that starts with
+ * name and says what is wrong (not "MThd", a truncated chunk, a running
+ * status with none before, ...); *events and *count are then untouched. */
+int smf_parse(const uint8_t *data, size_t size, const char *name, smf_event **events,
+              size_t *count, char *err, size_t err_size);
+
+/* Reads the file at path (at most 64 MiB) and parses it as smf_parse does,
+ * with path for name. */
 int smf_read(const char *path, smf_event **events, size_t *count, char *err, size_t err_size);
 
 #endif
