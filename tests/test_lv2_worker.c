@@ -110,11 +110,46 @@ static void test_refused_notes_are_failures(void **state)
     lv2_host_destroy(h);
 }
 
+/* Controls out of range or NaN are clamped: a preset of -5 is the spark
+ * balls, a distance of 1e9 m is 20 km (58 s away: silent for the second
+ * run here), NaN reads as the minimum (0.1 m: heard in the next block). */
+static void test_controls_clamped(void **state)
+{
+    (void)state;
+    lv2_host *h = lv2_host_create(RATE_HZ);
+    assert_non_null(h);
+    lv2_host_set(h, "gain", 0);
+    lv2_host_set(h, "preset", -5);
+    lv2_host_set(h, "distance", 1e9f);
+    lv2_host_set(h, "t0_scale", NAN);
+    lv2_host_set(h, "strokes", 99);
+    lv2_host_set(h, "seed", -1);
+    lv2_host_midi(h, 0, 0x90, 60, 127);
+    float peak, loudest = 0;
+    for (int b = 0; b < (int)(RATE_HZ / BLOCK); b++) {
+        run_block(h, &peak);
+        lv2_work_on_thread(h, NULL);
+        loudest = fmaxf(loudest, peak);
+    }
+    assert_true(lv2_host_get(h, "discharges") == 1);
+    assert_true(lv2_host_get(h, "failures") == 0);
+    assert_true(loudest == 0);
+    lv2_host_set(h, "distance", NAN);
+    lv2_host_midi(h, 0, 0x90, 60, 127);
+    run_block(h, NULL);
+    lv2_work_on_thread(h, NULL);
+    run_block(h, &peak);
+    assert_true(lv2_host_get(h, "discharges") == 2);
+    assert_true(peak > 1.0f);
+    lv2_host_destroy(h);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_response_in_later_run),
         cmocka_unit_test(test_refused_notes_are_failures),
+        cmocka_unit_test(test_controls_clamped),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
