@@ -135,7 +135,8 @@ static void test_play(void **state)
         size_t earliest = emit + (size_t)((n->distance_m - n->extent_m) / C_M_S * rate_hz);
         size_t latest = emit + (size_t)((n->distance_m + n->extent_m) / C_M_S * rate_hz) + 1;
         size_t first = first_sound(&r, on, latest + 1);
-        fprintf(stderr, "%.0f Hz note %zu: first sound %.2f ms after emission (%.2f..%.2f), peak %g\n",
+        fprintf(stderr,
+                "%.0f Hz note %zu: first sound %.2f ms after emission (%.2f..%.2f), peak %g\n",
                 rate_hz, i, 1e3 * (double)(first - emit) / rate_hz,
                 1e3 * (double)(earliest - emit) / rate_hz, 1e3 * (double)(latest - emit) / rate_hz,
                 (double)peak(&r, first, first + (size_t)(0.05 * rate_hz)));

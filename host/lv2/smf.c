@@ -145,7 +145,10 @@ static uint8_t *slurp(const char *path, size_t *size, char *err, size_t err_size
     return data;
 }
 
-static uint32_t be32(const uint8_t *p) { return (uint32_t)p[0] << 24 | p[1] << 16 | p[2] << 8 | p[3]; }
+static uint32_t be32(const uint8_t *p)
+{
+    return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
+}
 
 int smf_read(const char *path, smf_event **events, size_t *count, char *err, size_t err_size)
 {
@@ -168,7 +171,8 @@ int smf_parse(const uint8_t *data, size_t size, const char *name, smf_event **ev
         snprintf(err, err_size, "%s: not a Standard MIDI File (no MThd header)", name);
         return -1;
     }
-    unsigned format = (unsigned)(data[8] << 8 | data[9]), division = (unsigned)(data[12] << 8 | data[13]);
+    unsigned format = (unsigned)(data[8] << 8 | data[9]);
+    unsigned division = (unsigned)(data[12] << 8 | data[13]);
     double tick_s = 0, ticks_per_quarter = division;
     if (division & 0x8000) {   /* SMPTE: frames per second and ticks per frame */
         int fps = -(int8_t)(division >> 8), per_frame = division & 0xff;
