@@ -3,7 +3,8 @@
  * MIDI sequence with the worker on its own thread. Each note is silent
  * until its sound has travelled from where the note map puts it, and
  * sounds after; run() never allocates or locks; a held plasma-ball note
- * sounds until its note-off. */
+ * sounds until its note-off. Rates the engine cannot run at fail to
+ * instantiate. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -157,6 +158,18 @@ static void test_play(void **state)
     free(r.right);
 }
 
+/* Rates the engine refuses: instantiate fails (with a message) rather than
+ * returning an instance that cannot play. */
+static void test_unsupported_rates(void **state)
+{
+    (void)state;
+    assert_null(lv2_host_create(4000));
+    assert_null(lv2_host_create(500000));
+    lv2_host *h = lv2_host_create(8000);
+    assert_non_null(h);
+    lv2_host_destroy(h);
+}
+
 static double rate_44k = 44100, rate_48k = 48000;
 
 int main(void)
@@ -164,6 +177,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_prestate(test_play, &rate_44k),
         cmocka_unit_test_prestate(test_play, &rate_48k),
+        cmocka_unit_test(test_unsupported_rates),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

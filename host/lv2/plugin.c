@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include <lv2/atom/util.h>
+#include <lv2/log/logger.h>
 #include <lv2/midi/midi.h>
 #include <lv2/state/state.h>
 
@@ -29,19 +30,30 @@ static LV2_Handle instantiate(const LV2_Descriptor *descriptor, double rate_hz,
 {
     (void)descriptor;
     (void)bundle_path;
-    const LV2_URID_Map *map = NULL;
+    LV2_URID_Map *map = NULL;
     LV2_Worker_Schedule *schedule = NULL;
+    LV2_Log_Log *log = NULL;
     for (size_t i = 0; features && features[i]; i++) {
         if (!strcmp(features[i]->URI, LV2_URID__map))
             map = features[i]->data;
         else if (!strcmp(features[i]->URI, LV2_WORKER__schedule))
             schedule = features[i]->data;
+        else if (!strcmp(features[i]->URI, LV2_LOG__log))
+            log = features[i]->data;
     }
-    if (!map || !schedule)
-        return NULL;   /* both are lv2:requiredFeature in fulgur.ttl */
-    plugin *p = calloc(1, sizeof *p);
-    if (!p)
+    /* the host's log if it has one, else stderr */
+    LV2_Log_Logger logger;
+    lv2_log_logger_init(&logger, map, log);
+    if (!map || !schedule) {
+        lv2_log_error(&logger, "fulgur.lv2: the host does not provide %s\n",
+                      !map ? LV2_URID__map : LV2_WORKER__schedule);
         return NULL;
+    }
+    plugin *p = calloc(1, sizeof *p);
+    if (!p) {
+        lv2_log_error(&logger, "fulgur.lv2: out of memory\n");
+        return NULL;
+    }
     fg_engine_config config;
     fg_engine_config_default(&config);
     config.sample_rate_hz = rate_hz;
@@ -50,9 +62,14 @@ static LV2_Handle instantiate(const LV2_Descriptor *descriptor, double rate_hz,
     p->urid_midi_event = map->map(map->handle, LV2_MIDI__MidiEvent);
     p->urid_long = map->map(map->handle, LV2_ATOM__Long);
     p->urid_counter = map->map(map->handle, FULGUR_LV2_COUNTER_URI);
-    if (fg_engine_create(&config, &p->engine) != FG_OK ||
-        fg_engine_set_listener(p->engine, &listener) != FG_OK ||
-        fg_tree_create(1024, &p->tree) != FG_OK) {
+    fg_result r = fg_engine_create(&config, &p->engine);
+    if (r == FG_OK)
+        r = fg_engine_set_listener(p->engine, &listener);
+    if (r == FG_OK)
+        r = fg_tree_create(1024, &p->tree);
+    if (r != FG_OK) {
+        lv2_log_error(&logger, "fulgur.lv2: the engine at %.0f Hz: %s\n", rate_hz,
+                      fg_result_str(r));
         cleanup(p);
         return NULL;
     }
