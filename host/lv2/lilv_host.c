@@ -50,9 +50,9 @@ struct lv2_host {
     unsigned work_calls, responses_given;
 };
 
-/* One URID table for the process, as a host has: a state saved by one
- * instance carries URIDs that another must read alike. Called from the main
- * thread only (instantiate, state, lv2_host_midi). */
+/* One URID table for the process, as a host has (kept until exit): a state
+ * saved by one instance carries URIDs that another must read alike. Called
+ * from the main thread only (instantiate, state, lv2_host_midi). */
 static char *uris[MAX_URIDS];
 static uint32_t uri_count;
 
@@ -123,7 +123,7 @@ static void connect_ports(lv2_host *h)
     for (uint32_t i = 0; i < h->port_count; i++) {
         const LilvPort *port = lilv_plugin_get_port_by_index(h->plugin, i);
         if (lilv_port_is_a(h->plugin, port, control)) {
-            h->controls[i] = defaults[i] == defaults[i] ? defaults[i] : 0;
+            h->controls[i] = isnan(defaults[i]) ? 0 : defaults[i];
             lilv_instance_connect_port(h->instance, i, &h->controls[i]);
         } else if (lilv_port_is_a(h->plugin, port, audio) && audio_seen < 2) {
             h->audio_ports[audio_seen++] = i;
@@ -140,7 +140,11 @@ static void connect_ports(lv2_host *h)
 lv2_host *lv2_host_create(double rate_hz)
 {
     lv2_host *h = calloc(1, sizeof *h);
-    h->world = lilv_world_new();
+    if (!h || !(h->world = lilv_world_new())) {
+        fprintf(stderr, "lv2_host: out of memory\n");
+        free(h);
+        return NULL;
+    }
     lilv_world_load_all(h->world);   /* reads LV2_PATH */
     LilvNode *uri = lilv_new_uri(h->world, PLUGIN_URI);
     h->plugin = lilv_plugins_get_by_uri(lilv_world_get_all_plugins(h->world), uri);
@@ -162,6 +166,8 @@ lv2_host *lv2_host_create(double rate_hz)
     h->features[2] = &h->schedule_feature;
     h->port_count = lilv_plugin_get_num_ports(h->plugin);
     if (h->port_count > MAX_PORTS) {
+        fprintf(stderr, "lv2_host: %u ports, more than the %d this host holds\n", h->port_count,
+                MAX_PORTS);
         lv2_host_destroy(h);
         return NULL;
     }
