@@ -4,7 +4,7 @@
 fulgur_install_deps() {
   local pkgs=(cmake make gcc pkg-config libcjson-dev libsndfile1-dev libfftw3-dev
               libpng-dev gnuplot-nox libcmocka-dev clang-14 libfuzzer-14-dev
-              libclang-rt-14-dev lv2-dev liblilv-dev lilv-utils sordi
+              libclang-rt-14-dev lv2-dev liblilv-dev sordi
               ${FULGUR_DEPS_EXTRA:-})
   local missing=()
   for p in "${pkgs[@]}"; do
