@@ -4,7 +4,8 @@
 fulgur_install_deps() {
   local pkgs=(cmake make gcc pkg-config libcjson-dev libsndfile1-dev libfftw3-dev
               libpng-dev gnuplot-nox libcmocka-dev clang-14 libfuzzer-14-dev
-              libclang-rt-14-dev ${FULGUR_DEPS_EXTRA:-})
+              libclang-rt-14-dev lv2-dev liblilv-dev sordi
+              ${FULGUR_DEPS_EXTRA:-})
   local missing=()
   for p in "${pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -1,0 +1,51 @@
+/* lv2_host — a small LV2 host on liblilv for fulgur.lv2: the plugin's tests
+ * and fulgur-lv2-render drive the plugin through it.
+ *
+ * Discovers plugins through LV2_PATH (or the standard places), instantiates
+ * fulgur.lv2, owns every port buffer, and provides urid:map, urid:unmap and
+ * worker:schedule itself. Work scheduled from run() is queued without
+ * allocating; lv2_host_work runs the queue on whichever thread calls it
+ * (never while lv2_host_run runs): a test calls it from a worker thread,
+ * an offline renderer between blocks. The responses are delivered at the
+ * start of the next lv2_host_run, before run(), on its thread. */
+#ifndef FULGUR_HOST_LV2_LILV_HOST_H
+#define FULGUR_HOST_LV2_LILV_HOST_H
+
+#include <stdint.h>
+
+#include <lilv/lilv.h>
+
+typedef struct lv2_host lv2_host;
+
+/* Loads and instantiates the plugin at rate_hz; NULL on any failure (a
+ * message on stderr says which). */
+lv2_host *lv2_host_create(double rate_hz);
+void lv2_host_destroy(lv2_host *host);
+
+/* Sets an input control by its symbol: 0, or -1 if the plugin has no
+ * control port of that name. */
+int lv2_host_set(lv2_host *host, const char *symbol, float value);
+/* A control's value (an output's as of the last run), NaN if none. */
+float lv2_host_get(const lv2_host *host, const char *symbol);
+
+/* Queues a 3-byte MIDI message at frame of the next run: 0, or -1 if the
+ * next run's sequence (4 KiB) is full. */
+int lv2_host_midi(lv2_host *host, uint32_t frame, uint8_t status, uint8_t data1, uint8_t data2);
+
+/* Delivers pending responses, then runs the plugin for frames into
+ * left/right. [audio-thread]: no allocation or lock of its own. */
+void lv2_host_run(lv2_host *host, uint32_t frames, float *left, float *right);
+
+/* Runs every queued request on the calling thread. Returns how many. */
+unsigned lv2_host_work(lv2_host *host);
+
+/* Totals so far: work() calls, and responses handed to the plugin. */
+unsigned lv2_host_work_calls(const lv2_host *host);
+unsigned lv2_host_responses(const lv2_host *host);
+
+/* A snapshot of the instance (its state and control values), and its
+ * restoration into another instance; the caller frees with lilv_state_free. */
+LilvState *lv2_host_save(lv2_host *host);
+void lv2_host_restore(lv2_host *host, const LilvState *state);
+
+#endif

@@ -1,0 +1,26 @@
+#!/bin/sh
+# fulgur-lv2-render on a one-note MIDI file: exit 0, one discharge, a WAV
+# whose peak `fulgur analyze` reads; on a file that is not MIDI: exit 2, the
+# message, no WAV. usage: cli_lv2_render.sh FULGUR_LV2_RENDER FULGUR
+set -u
+render=$1 fulgur=$2
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+# format 0, 480 ticks per quarter, 120 bpm: note 60 on at 0, off at 0.5 s
+printf 'MThd\000\000\000\006\000\000\000\001\001\340MTrk\000\000\000\023\000\377\121\003\007\241\040\000\220\074\144\203\140\074\000\000\377\057\000' > "$dir/one.mid"
+out=$("$render" "$dir/one.mid" -o "$dir/one.wav" -t 1 distance=5 gain=-30) || { echo "render failed: $out"; exit 1; }
+echo "$out"
+echo "$out" | grep -q "^1.500 s, 1 discharges$" || { echo "expected 1.5 s and 1 discharge"; exit 1; }
+info=$("$fulgur" analyze "$dir/one.wav") || exit 1
+echo "$info"
+# a spark 5 m away peaks near 60 Pa; -30 dB makes that about 2
+echo "$info" | awk '{for (i = 1; i < NF; i++) if ($i == "peak") p = $(i + 1)} END {exit !(p > 0.5 && p < 10)}' ||
+    { echo "peak out of range"; exit 1; }
+printf 'not midi' > "$dir/bad.mid"
+"$render" "$dir/bad.mid" -o "$dir/bad.wav" 2> "$dir/err"
+rc=$?
+cat "$dir/err"
+[ $rc -eq 2 ] || { echo "expected exit 2, got $rc"; exit 1; }
+grep -q "not a Standard MIDI File" "$dir/err" || exit 1
+[ ! -e "$dir/bad.wav" ] || { echo "a WAV was left behind"; exit 1; }
+echo ok
