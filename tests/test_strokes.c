@@ -203,12 +203,42 @@ static void test_seeded_repeat(void **state)
     CHECK(same < N / 10, "seeds 42 and 43 agree on %d of %d draws", same, N);
 }
 
+/* The published schedule: first stroke at 0, intervals inside the law's
+ * range, a count that follows the request, and answers for bad input. */
+static void test_published_offsets(void **state)
+{
+    (void)state;
+    double t[FG_MAX_STROKES + 1];
+    CHECK(fg_discharge_stroke_offsets(NULL, t, FG_MAX_STROKES) == 0, "NULL discharge");
+    fg_discharge d = {.strokes = FG_MAX_STROKES + 1};
+    CHECK(fg_discharge_stroke_offsets(&d, t, FG_MAX_STROKES) == 0, "too many strokes");
+    d = (fg_discharge){.continuous = 1, .seed = 3};
+    t[0] = -1;
+    CHECK(fg_discharge_stroke_offsets(&d, t, 1) == 1 && t[0] == 0.0, "continuous: one at 0");
+    d = (fg_discharge){.strokes = 6, .seed = 9};
+    t[2] = -1;
+    CHECK(fg_discharge_stroke_offsets(&d, NULL, 0) == 6, "count without offsets");
+    CHECK(fg_discharge_stroke_offsets(&d, t, 2) == 6 && t[2] == -1, "writes past max");
+    CHECK(fg_discharge_stroke_offsets(&d, t, FG_MAX_STROKES) == 6 && t[0] == 0.0, "first at 0");
+    for (int k = 1; k < 6; k++)
+        CHECK(t[k] - t[k - 1] >= 0.010 && t[k] - t[k - 1] < 0.240, "interval %d: %g s", k,
+              t[k] - t[k - 1]);
+    uint32_t total = 0;
+    for (uint64_t seed = 0; seed < 2000; seed++) {
+        d = (fg_discharge){.seed = seed};
+        total += fg_discharge_stroke_offsets(&d, NULL, 0);
+    }
+    CHECK(fabs(total / 2000.0 - 3.0) < 0.2, "drawn counts average %.2f, the law 3.0",
+          total / 2000.0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_count_law),
         cmocka_unit_test(test_interval_law),
         cmocka_unit_test(test_seeded_repeat),
+        cmocka_unit_test(test_published_offsets),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -203,10 +203,7 @@ void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
             v->main_index[v->main_count++] = k;
 
     v->continuous = d->continuous != 0;
-    v->strokes = d->strokes ? d->strokes : v->continuous ? 1 : fg_strokes_draw_count(&rng);
-    v->stroke_offset_s[0] = 0;
-    for (uint32_t k = 1; k < v->strokes; k++)
-        v->stroke_offset_s[k] = v->stroke_offset_s[k - 1] + fg_strokes_draw_interval_s(&rng);
+    v->strokes = fg_discharge_stroke_offsets(d, v->stroke_offset_s, FG_MAX_STROKES);
     v->repeat_min_s = d->repeat_min_s > 0 ? d->repeat_min_s : REPEAT_MIN_DEFAULT_S;
     v->repeat_max_s = d->repeat_max_s > 0 ? d->repeat_max_s : REPEAT_MAX_DEFAULT_S;
     v->duration_s = d->duration_s;

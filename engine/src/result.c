@@ -17,6 +17,8 @@ const char *fg_result_str(fg_result r)
     case FG_ERR_NO_MEMORY: return "out of memory";
     case FG_ERR_UNREACHABLE: return "target cannot be reached";
     case FG_ERR_NOT_CONVERGED: return "solver did not converge";
+    case FG_ERR_UNSUPPORTED: return "not supported here";
+    case FG_ERR_GPU: return "the GPU driver failed";
     }
     return "unknown result code";
 }

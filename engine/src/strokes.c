@@ -59,3 +59,25 @@ double fg_strokes_draw_interval_s(fg_rng *rng)
     uint32_t k = draw(rng, poisson_weight, 0, FG_STROKE_INTERVAL_MAX_K);
     return FG_STROKE_INTERVAL_UNIT_S * (1.0 + k + fg_rng_uniform(rng));
 }
+
+/* The strokes take a stream of their own from the seed, so that they depend
+ * on the seed alone and a picture can flash with the sound before (or
+ * without) the tree being posted. */
+#define STROKE_STREAM 0x9e3779b97f4a7c15ull
+
+uint32_t fg_discharge_stroke_offsets(const fg_discharge *d, double *offsets_s, uint32_t max)
+{
+    if (!d || d->strokes > FG_MAX_STROKES)
+        return 0;
+    fg_rng rng;
+    fg_rng_seed(&rng, d->seed ^ STROKE_STREAM);
+    uint32_t count = d->strokes ? d->strokes : d->continuous ? 1 : fg_strokes_draw_count(&rng);
+    double t = 0.0;
+    for (uint32_t k = 0; k < count; k++) {
+        if (k > 0)
+            t += fg_strokes_draw_interval_s(&rng);
+        if (offsets_s && k < max)
+            offsets_s[k] = t;
+    }
+    return count;
+}

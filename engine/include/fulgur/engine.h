@@ -83,6 +83,16 @@ typedef struct fg_engine_stats {
     uint64_t blocks_over_budget;/* render calls that took longer than their frames last */
 } fg_engine_stats;
 
+/* The start of each stroke of the discharge, seconds after its emit time,
+ * exactly as fg_engine_post will schedule them (they depend on seed,
+ * strokes and continuous only): writes min(count, max) offsets, the first
+ * 0, and returns count (1 for a continuous discharge). offsets_s may be NULL
+ * to ask for the count. A picture uses this to flash with the sound.
+ * [any-thread]
+ * Returns 0 when discharge is NULL or strokes > FG_MAX_STROKES. */
+FG_API uint32_t fg_discharge_stroke_offsets(const fg_discharge *discharge, double *offsets_s,
+                                            uint32_t max);
+
 /* Fills *config with the defaults. [any-thread] */
 FG_API void fg_engine_config_default(fg_engine_config *config);
 

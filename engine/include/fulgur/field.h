@@ -172,6 +172,29 @@ FG_API FG_NODISCARD fg_result fg_field_classify(const fg_field *field, const dou
  * Returns 0 when field is NULL or the cache cannot be allocated. */
 FG_API size_t fg_field_origin_sites(fg_field *field, double *points_m, size_t max);
 
+/* The number of nodes, n[0] * n[1] * n[2]: the length of the arrays below.
+ * Node (i, j, k) is at index i + n[0] * (j + n[1] * k) and at position
+ * min_m + (i, j, k) * cell. [sim-thread] */
+FG_API size_t fg_field_node_count(const fg_field *field);
+
+/* Copies every node's fg_region label into labels[0..node_count): FREE for
+ * the unknowns, ORIGIN, TARGET or FIXED for Dirichlet nodes. This is the
+ * boundary description another solver (gpu/) works from. [sim-thread]
+ * Errors: FG_ERR_NULL field or labels. */
+FG_API FG_NODISCARD fg_result fg_field_get_labels(const fg_field *field, uint8_t *labels);
+
+/* Copies phi at every node into phi[0..node_count): Dirichlet nodes hold
+ * their normalised values, free nodes the last solution. [sim-thread]
+ * Errors: FG_ERR_NULL field or phi. */
+FG_API FG_NODISCARD fg_result fg_field_get_potential(const fg_field *field, double *phi);
+
+/* Sets phi on the free nodes from phi[0..node_count); Dirichlet nodes keep
+ * their values. For a field solved elsewhere (gpu/), or a warm start from
+ * one. [sim-thread]
+ * Errors: FG_ERR_NULL field or phi; FG_ERR_NOT_FINITE a free node's value
+ * (the field is then unchanged). */
+FG_API FG_NODISCARD fg_result fg_field_set_potential(fg_field *field, const double *phi);
+
 /* What a growth model reads: phi and regions at arbitrary points, and where
  * it may start. A CPU fg_field provides one (fg_field_source_init); a GPU
  * solver can provide the same. All calls come from the one sim thread. */

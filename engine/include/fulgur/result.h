@@ -18,7 +18,9 @@ typedef enum fg_result {
     FG_ERR_NOT_FOUND = -10,    /* no live voice has that id */
     FG_ERR_NO_MEMORY = -11,    /* allocation failed (never on the audio thread) */
     FG_ERR_UNREACHABLE = -12,  /* a growth target cannot be reached */
-    FG_ERR_NOT_CONVERGED = -13 /* an iterative solve stopped short of its tolerance */
+    FG_ERR_NOT_CONVERGED = -13,/* an iterative solve stopped short of its tolerance */
+    FG_ERR_UNSUPPORTED = -14,  /* not available here: a backend not built or not usable, GL too old */
+    FG_ERR_GPU = -15           /* the GPU driver failed: a shader did not compile, a GL error */
 } fg_result;
 
 /* A short English description of r, e.g. "tree is invalid". Never NULL; the
