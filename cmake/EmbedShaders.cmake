@@ -1,0 +1,19 @@
+# Writes OUTPUT_C and OUTPUT_H holding each GLSL file of SHADERS (a
+# ;-list) as a C string named fgg_shader_<file name without extension>.
+# Run as a script: cmake -DSHADERS=... -DOUTPUT_C=... -DOUTPUT_H=... -P
+set(c "/* Generated from gpu/shaders by cmake/EmbedShaders.cmake. */\n#include \"gpu_shaders.h\"\n")
+set(h "/* Generated from gpu/shaders by cmake/EmbedShaders.cmake. */\n#ifndef FULGUR_GPU_SHADERS_H\n#define FULGUR_GPU_SHADERS_H\n")
+foreach(file IN LISTS SHADERS)
+  get_filename_component(name "${file}" NAME_WE)
+  file(READ "${file}" text)
+  string(REPLACE "\\" "\\\\" text "${text}")
+  string(REPLACE "\"" "\\\"" text "${text}")
+  string(REPLACE "\n" "\\n\"\n    \"" text "${text}")
+  string(APPEND c "\nconst char fgg_shader_${name}[] =\n    \"${text}\";\n")
+  string(APPEND h "extern const char fgg_shader_${name}[];\n")
+endforeach()
+string(APPEND h "#endif\n")
+file(WRITE "${OUTPUT_C}.tmp" "${c}")
+file(WRITE "${OUTPUT_H}.tmp" "${h}")
+execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different "${OUTPUT_C}.tmp" "${OUTPUT_C}")
+execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different "${OUTPUT_H}.tmp" "${OUTPUT_H}")
