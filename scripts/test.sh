@@ -56,7 +56,7 @@ t_tsan=$((SECONDS - start - t_normal))
 
 heading "3/3 fuzz build (clang-14, libFuzzer, ASan+UBSan, build-fuzz/)"
 if [ -f tests/fuzz/CMakeLists.txt ]; then
-    cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang-14 -DFULGUR_FUZZ=ON "${TEST_FLAGS[@]}"
+    cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang-14 -DFULGUR_FUZZ=ON -DFULGUR_GPU=OFF "${TEST_FLAGS[@]}"
     [ -f build-fuzz/tests/fuzz/Makefile ] || fail "FULGUR_FUZZ=ON does not configure tests/fuzz"
     # only the fuzz targets and what they link
     make -C build-fuzz/tests/fuzz -j "$JOBS"
