@@ -28,8 +28,8 @@
  *
  * The pointers are the process's, not the thread's: while an OSMesa context
  * is current on one thread, other threads must not call GL through epoxy.
- * This is asserted by owning the redirection per thread. */
-#include <assert.h>
+ * A second thread's OSMesa context is refused; a second thread's EGL or
+ * window context is not detected. */
 #include <stdatomic.h>
 #include <stdlib.h>
 
@@ -53,17 +53,18 @@ typedef void (*gl_proc)(void);
 enum { GL_NAME_COUNT = 0 FGG_GL_NAMES(COUNT_NAME) };
 
 static gl_proc kept[GL_NAME_COUNT];
-static _Atomic(int) redirected;
+static atomic_int redirected; /* by some thread */
 static _Thread_local int redirected_here;
 
-static void redirect(void)
+/* Points epoxy at OSMesa for this thread, unless another thread has. */
+static fg_result redirect(void)
 {
     if (redirected_here)
-        return;
-    int was = 0;
-    int first = atomic_compare_exchange_strong(&redirected, &was, 1);
-    assert(first && "an OSMesa context is current on another thread");
-    (void)first;
+        return FG_OK;
+    int none = 0;
+    if (!atomic_compare_exchange_strong(&redirected, &none, 1))
+        return fgg_fail(FG_ERR_UNSUPPORTED, "OSMesa: a context is current on another thread; "
+                                            "OSMesa contexts work on one thread at a time");
     redirected_here = 1;
     int i = 0;
     gl_proc proc;
@@ -75,6 +76,7 @@ static void redirect(void)
     i++;
     FGG_GL_NAMES(REDIRECT)
 #undef REDIRECT
+    return FG_OK;
 }
 
 static void restore(void)
@@ -128,9 +130,13 @@ static fg_result refused(void)
 static fg_result osmesa_make_current(fgg_context *ctx)
 {
     osmesa_state *s = ctx->impl;
-    if (!OSMesaMakeCurrent(s->context, s->pixel, GL_UNSIGNED_BYTE, 1, 1))
+    fg_result r = redirect();
+    if (r != FG_OK)
+        return r;
+    if (!OSMesaMakeCurrent(s->context, s->pixel, GL_UNSIGNED_BYTE, 1, 1)) {
+        restore();
         return fgg_fail(FG_ERR_GPU, "OSMesa: OSMesaMakeCurrent failed");
-    redirect();
+    }
     return FG_OK;
 }
 
@@ -157,8 +163,6 @@ static fg_result osmesa_create(fgg_context *ctx, const fgg_context_config *confi
     return r;
 }
 
-/* Also when the thread's OSMesa context is not ours: the redirection and
- * OSMesa's current context are one per thread, whichever context it is. */
 static void osmesa_release(fgg_context *ctx)
 {
     (void)ctx;

@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+#include <threads.h>
 
 #include <cmocka.h>
 
@@ -226,6 +227,37 @@ static void test_egl_after_osmesa(void **state)
     fgg_context_destroy(egl);
 }
 
+static int create_osmesa_elsewhere(void *message)
+{
+    fgg_context *ctx = NULL;
+    fg_result r = fgg_context_create(&(fgg_context_config){.backend = FGG_BACKEND_OSMESA}, &ctx);
+    strncpy(message, fgg_error_message(), 255);
+    fgg_context_destroy(ctx);
+    return r;
+}
+
+/* epoxy's pointers are the process's: one thread at a time has OSMesa. */
+static void test_osmesa_one_thread(void **state)
+{
+    (void)state;
+    if (!fgg_backend_built(FGG_BACKEND_OSMESA))
+        skip();
+    fgg_context *ctx = create(FGG_BACKEND_OSMESA);
+    char message[256] = "";
+    thrd_t other;
+    int r = 0;
+    assert_int_equal(thrd_create(&other, create_osmesa_elsewhere, message), thrd_success);
+    assert_int_equal(thrd_join(other, &r), thrd_success);
+    assert_int_equal(r, FG_ERR_UNSUPPORTED);
+    assert_non_null(strstr(message, "current on another thread"));
+    assert_computes_squares();
+    fgg_context_destroy(ctx);
+    /* once released here, the other thread may */
+    assert_int_equal(thrd_create(&other, create_osmesa_elsewhere, message), thrd_success);
+    assert_int_equal(thrd_join(other, &r), thrd_success);
+    assert_int_equal(r, FG_OK);
+}
+
 /* The driver's log, naming the line, is in the message. */
 static void test_shader_error(void **state)
 {
@@ -332,6 +364,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_egl),
         cmocka_unit_test(test_osmesa),
         cmocka_unit_test(test_egl_after_osmesa),
+        cmocka_unit_test(test_osmesa_one_thread),
         cmocka_unit_test(test_shader_error),
         cmocka_unit_test(test_window_without_display),
     };
