@@ -294,6 +294,15 @@ static void test_window_without_display(void **state)
     assert_ptr_equal(ctx, sentinel);
     assert_non_null(strstr(fgg_error_message(), "DISPLAY"));
     assert_non_null(strstr(fgg_error_message(), "--gl egl"));
+    /* a failed create leaves the context that was current, current */
+    for (int b = FGG_BACKEND_EGL; b <= FGG_BACKEND_OSMESA; b++) {
+        if (!fgg_backend_built((fgg_backend)b))
+            continue;
+        fgg_context *previous = create((fgg_backend)b);
+        assert_int_equal(fgg_context_create(&config, &ctx), FG_ERR_UNSUPPORTED);
+        assert_computes_squares();
+        fgg_context_destroy(previous);
+    }
 }
 
 /* MESA_GL_VERSION_OVERRIDE=3.3: the refusal names 4.3 and what is offered. */
