@@ -178,10 +178,14 @@ static void test_egl(void **state)
 static void test_osmesa(void **state)
 {
     (void)state;
-    if (!fgg_backend_built(FGG_BACKEND_OSMESA))
-        skip();
     fgg_context *ctx = NULL;
     fgg_context_config config = {.backend = FGG_BACKEND_OSMESA, .width = 64, .height = 32};
+    if (!fgg_backend_built(FGG_BACKEND_OSMESA)) {
+        assert_int_equal(fgg_context_create(&config, &ctx), FG_ERR_UNSUPPORTED);
+        assert_null(ctx);
+        assert_non_null(strstr(fgg_error_message(), "install libosmesa6-dev"));
+        return;
+    }
     assert_int_equal(fgg_context_create(&config, &ctx), FG_OK);
     assert_core_43(ctx, FGG_BACKEND_OSMESA, "OSMesa");
     int w = -1, h = -1;
