@@ -6,7 +6,7 @@
  *   (none)  names, arguments, EGL, OSMesa, switching, shader errors, the
  *           window backend with no display;
  *   old-gl  run with MESA_GL_VERSION_OVERRIDE=3.3: 4.3 core is refused;
- *   window  run under xvfb-run: a GLFW window, and switching to OSMesa. */
+ *   window  run under xvfb-run: a GLFW window, switching to EGL and OSMesa. */
 #define _POSIX_C_SOURCE 200809L /* unsetenv */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -334,7 +334,7 @@ static void test_old_gl_refused(void **state)
     }
 }
 
-/* Under xvfb-run: a window, then OSMesa and back (GLX and OSMesa in turn). */
+/* Under xvfb-run: a window, then EGL and OSMesa and back to it. */
 static void test_window(void **state)
 {
     (void)state;
@@ -349,6 +349,12 @@ static void test_window(void **state)
     assert_non_null(fgg_context_native_window(window));
     assert_computes_squares();
     fgg_context_present(window);
+    /* glvnd refuses EGL on a thread with GLX current: the window is released */
+    fgg_context *egl = create(FGG_BACKEND_EGL);
+    assert_computes_squares();
+    assert_int_equal(fgg_context_make_current(window), FG_OK);
+    assert_computes_squares();
+    fgg_context_destroy(egl);
     if (fgg_backend_built(FGG_BACKEND_OSMESA)) {
         fgg_context *osmesa = create(FGG_BACKEND_OSMESA);
         assert_computes_squares();
