@@ -41,6 +41,20 @@ int fgg_backend_built(fgg_backend backend)
 
 static const char *const packages[] = {"libegl-dev", "libosmesa6-dev", "libglfw3-dev"};
 
+/* The fgg context current on this thread. Making another one current first
+ * releases this one through its own platform: EGL, GLX and OSMesa do not
+ * know of each other's contexts (glvnd refuses an EGL context on a thread
+ * where a GLX one is current; an OSMesa context holds epoxy's dispatch,
+ * see context_osmesa.c). */
+static _Thread_local fgg_context *current;
+
+static void release_current(void)
+{
+    if (current)
+        current->ops->release(current);
+    current = NULL;
+}
+
 fg_result fgg_context_create(const fgg_context_config *config, fgg_context **out)
 {
     if (!out)
@@ -65,14 +79,19 @@ fg_result fgg_context_create(const fgg_context_config *config, fgg_context **out
     ctx->width = c.width;
     ctx->height = c.height;
     ctx->debug = c.debug;
+    fgg_context *previous = current;
+    release_current();
     fg_result r = ops->create(ctx, &c);
-    if (r != FG_OK) {
-        free(ctx);
-        return r;
+    if (r == FG_OK) {
+        current = ctx;
+        r = fgg_context_check_version(ctx);
     }
-    r = fgg_context_check_version(ctx);
     if (r != FG_OK) {
         fgg_context_destroy(ctx);
+        /* a failed create leaves the thread as it was; previous made itself
+         * current once, so this is not expected to fail */
+        if (previous && previous->ops->make_current(previous) == FG_OK)
+            current = previous;
         return r;
     }
     *out = ctx;
@@ -83,6 +102,8 @@ void fgg_context_destroy(fgg_context *ctx)
 {
     if (!ctx)
         return;
+    if (ctx == current)
+        release_current();
     if (ctx->impl)
         ctx->ops->destroy(ctx);
     free(ctx);
@@ -92,7 +113,11 @@ fg_result fgg_context_make_current(fgg_context *ctx)
 {
     if (!ctx)
         return fgg_fail(FG_ERR_NULL, "fgg_context_make_current: context is NULL");
-    return ctx->ops->make_current(ctx);
+    if (ctx != current)
+        release_current();
+    fg_result r = ctx->ops->make_current(ctx);
+    current = r == FG_OK ? ctx : NULL;
+    return r;
 }
 
 void fgg_context_get_info(const fgg_context *ctx, fgg_context_info *out)

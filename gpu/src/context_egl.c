@@ -123,10 +123,15 @@ static fg_result egl_create(fgg_context *ctx, const fgg_context_config *config)
     return FG_OK;
 }
 
-static void egl_destroy(fgg_context *ctx)
+static void egl_release(fgg_context *ctx)
 {
     egl_state *s = ctx->impl;
     eglMakeCurrent(s->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+}
+
+static void egl_destroy(fgg_context *ctx)
+{
+    egl_state *s = ctx->impl;
     eglDestroyContext(s->display, s->context);
     eglTerminate(s->display);
     free(s);
@@ -146,6 +151,7 @@ static const fgg_backend_ops egl_ops = {
     .create = egl_create,
     .destroy = egl_destroy,
     .make_current = egl_make_current,
+    .release = egl_release,
 };
 
 const fgg_backend_ops *const fgg_egl_backend = &egl_ops;

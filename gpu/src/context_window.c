@@ -58,6 +58,12 @@ static fg_result window_make_current(fgg_context *ctx)
     return FG_OK;
 }
 
+static void window_release(fgg_context *ctx)
+{
+    (void)ctx;
+    glfwMakeContextCurrent(NULL);
+}
+
 static void window_present(fgg_context *ctx)
 {
     glfwSwapBuffers(ctx->impl);
@@ -73,6 +79,7 @@ static const fgg_backend_ops window_ops = {
     .create = window_create,
     .destroy = window_destroy,
     .make_current = window_make_current,
+    .release = window_release,
     .present = window_present,
     .framebuffer_size = window_framebuffer_size,
 };

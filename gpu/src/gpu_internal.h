@@ -16,12 +16,15 @@
 /* Sets fgg_error_message() and returns result. */
 fg_result fgg_fail(fg_result result, const char *format, ...) FGG_PRINTF(2, 3);
 
-/* One backend: create fills context->impl and makes the context current. */
+/* One backend: create fills context->impl and makes the context current;
+ * release makes it not current on the calling thread (context.c calls it
+ * before another context is made current there, or this one destroyed). */
 typedef struct fgg_backend_ops {
     const char *library; /* the Debian package that provides it, for messages */
     fg_result (*create)(fgg_context *context, const fgg_context_config *config);
     void (*destroy)(fgg_context *context);
     fg_result (*make_current)(fgg_context *context);
+    void (*release)(fgg_context *context);
     void (*present)(fgg_context *context);
     void (*framebuffer_size)(const fgg_context *context, int *width, int *height);
 } fgg_backend_ops;
