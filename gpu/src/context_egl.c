@@ -3,6 +3,7 @@
  * surface: the picture renders into its own framebuffer objects. */
 #include <stdlib.h>
 #include <string.h>
+#include <threads.h>
 
 #include <epoxy/egl.h>
 
@@ -12,6 +13,55 @@ typedef struct egl_state {
     EGLDisplay display;
     EGLContext context;
 } egl_state;
+
+/* EGL hands every context of a platform the same display, and
+ * eglTerminate ends it for all of them: a display is terminated when the
+ * last context on it goes. Contexts may live on several threads. */
+#define MAX_DISPLAYS 8
+static struct {
+    EGLDisplay display;
+    int contexts;
+} displays[MAX_DISPLAYS];
+static mtx_t displays_lock;
+static once_flag displays_once = ONCE_FLAG_INIT;
+
+static void displays_init(void)
+{
+    mtx_init(&displays_lock, mtx_plain);
+}
+
+static void display_hold(EGLDisplay d)
+{
+    call_once(&displays_once, displays_init);
+    mtx_lock(&displays_lock);
+    int free_slot = -1;
+    for (int i = 0; i < MAX_DISPLAYS; i++) {
+        if (displays[i].contexts > 0 && displays[i].display == d) {
+            displays[i].contexts++;
+            mtx_unlock(&displays_lock);
+            return;
+        }
+        if (displays[i].contexts == 0 && free_slot < 0)
+            free_slot = i;
+    }
+    /* more displays than slots: never terminated, which only leaks */
+    if (free_slot >= 0)
+        displays[free_slot].display = d, displays[free_slot].contexts = 1;
+    mtx_unlock(&displays_lock);
+}
+
+static void display_drop(EGLDisplay d)
+{
+    call_once(&displays_once, displays_init);
+    mtx_lock(&displays_lock);
+    for (int i = 0; i < MAX_DISPLAYS; i++)
+        if (displays[i].contexts > 0 && displays[i].display == d) {
+            if (--displays[i].contexts == 0)
+                eglTerminate(d);
+            break;
+        }
+    mtx_unlock(&displays_lock);
+}
 
 static int has_extension(const char *list, const char *name)
 {
@@ -99,24 +149,25 @@ static fg_result egl_create(fgg_context *ctx, const fgg_context_config *config)
                             "(EGL error 0x%x)", (unsigned)eglGetError());
         ctx->platform = "EGL surfaceless";
     }
+    display_hold(d);
     if (!has_extension(eglQueryString(d, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context") ||
         !eglBindAPI(EGL_OPENGL_API)) {
-        eglTerminate(d);
+        display_drop(d);
         return fgg_fail(FG_ERR_UNSUPPORTED, "%s: no surfaceless desktop OpenGL", ctx->platform);
     }
     EGLContext c = make_context(d, config->debug, FGG_GL_MAJOR, FGG_GL_MINOR);
     if (c == EGL_NO_CONTEXT) {
         fg_result r = refused(d, ctx->platform);
-        eglTerminate(d);
+        display_drop(d);
         return r;
     }
     egl_state *s = malloc(sizeof *s);
     if (!s || !eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, c)) {
+        fg_result r = s ? FG_ERR_GPU : FG_ERR_NO_MEMORY;
         free(s);
         eglDestroyContext(d, c);
-        eglTerminate(d);
-        return fgg_fail(s ? FG_ERR_GPU : FG_ERR_NO_MEMORY, "%s: cannot make the context current",
-                        ctx->platform);
+        display_drop(d);
+        return fgg_fail(r, "%s: cannot make the context current", ctx->platform);
     }
     *s = (egl_state){d, c};
     ctx->impl = s;
@@ -133,7 +184,7 @@ static void egl_destroy(fgg_context *ctx)
 {
     egl_state *s = ctx->impl;
     eglDestroyContext(s->display, s->context);
-    eglTerminate(s->display);
+    display_drop(s->display);
     free(s);
 }
 

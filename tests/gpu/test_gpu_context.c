@@ -175,6 +175,23 @@ static void test_egl(void **state)
     fgg_context_destroy(ctx);
 }
 
+/* Two EGL contexts share one display: destroying one leaves the other
+ * working (the display is terminated with the last context). */
+static void test_two_egl(void **state)
+{
+    (void)state;
+    fgg_context *a = create(FGG_BACKEND_EGL);
+    fgg_context *b = create(FGG_BACKEND_EGL);
+    assert_computes_squares();
+    fgg_context_destroy(b);
+    assert_int_equal(fgg_context_make_current(a), FG_OK);
+    assert_computes_squares();
+    fgg_context_destroy(a);
+    fgg_context *c = create(FGG_BACKEND_EGL);
+    assert_computes_squares();
+    fgg_context_destroy(c);
+}
+
 static void test_osmesa(void **state)
 {
     (void)state;
@@ -381,6 +398,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_backends_built),
         cmocka_unit_test(test_bad_arguments),
         cmocka_unit_test(test_egl),
+        cmocka_unit_test(test_two_egl),
         cmocka_unit_test(test_osmesa),
         cmocka_unit_test(test_egl_after_osmesa),
         cmocka_unit_test(test_osmesa_one_thread),
