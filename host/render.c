@@ -3,6 +3,7 @@
  * would drive it; nothing else synthesizes sound. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <math.h>
+#include <stdbool.h>
 #include <sndfile.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,15 +14,20 @@
 #include "commands.h"
 #include "scene.h"
 #include "temp_file.h"
+#ifdef FULGUR_HAVE_GPU
+#include "render_picture.h"
+#endif
 
 /* Discharges are posted this long before their emit time, so the engine
  * prepares them off the audio path, as a simulation thread would. */
 #define POST_LEAD_S 0.5
 
 static const char usage[] =
-    "usage: fulgur render SCENE.json -o OUT.wav\n"
+    "usage: fulgur render SCENE.json -o OUT.wav [--png OUT.png [--png-time SECONDS]]\n"
     "Renders the scene (docs/scene-format.md) through fg_engine_render in blocks of the\n"
     "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n"
+    "--png also draws the discharges (docs/picture.md) from the scene's \"camera\" at the\n"
+    "first return stroke, or at --png-time, into a PNG (needs gpu/: FULGUR_GPU).\n"
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
 
 typedef struct render_job {
@@ -199,13 +205,26 @@ static int render_file(const scene *s, const char *out_path)
 
 int render_main(int argc, char **argv)
 {
-    const char *scene_path = NULL, *out_path = NULL;
+    const char *scene_path = NULL, *out_path = NULL, *png_path = NULL;
+    bool has_png_time = false;
+    double png_time = 0;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             fputs(usage, stdout);
             return CLI_OK;
         } else if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) {
             out_path = argv[++i];
+        } else if (strcmp(argv[i], "--png") == 0 && i + 1 < argc) {
+            png_path = argv[++i];
+        } else if (strcmp(argv[i], "--png-time") == 0 && i + 1 < argc) {
+            char *end = NULL;
+            png_time = strtod(argv[++i], &end);
+            if (end == argv[i] || *end || !isfinite(png_time)) {
+                fprintf(stderr, "fulgur render: --png-time: \"%s\" is not a finite number of "
+                                "seconds\n", argv[i]);
+                return CLI_USAGE;
+            }
+            has_png_time = true;
         } else if (argv[i][0] != '-' && !scene_path) {
             scene_path = argv[i];
         } else {
@@ -213,10 +232,17 @@ int render_main(int argc, char **argv)
             return CLI_USAGE;
         }
     }
-    if (!scene_path || !out_path) {
+    if (!scene_path || !out_path || (has_png_time && !png_path)) {
         fputs(usage, stderr);
         return CLI_USAGE;
     }
+#ifndef FULGUR_HAVE_GPU
+    if (png_path) {
+        fprintf(stderr, "fulgur render: --png needs the picture, and this fulgur was built "
+                        "without gpu/ (configure with -DFULGUR_GPU=ON, libepoxy, EGL, libpng)\n");
+        return CLI_USAGE;
+    }
+#endif
     char err[512];
     scene s;
     if (scene_load(scene_path, &s, err, sizeof err) != 0) {
@@ -229,6 +255,15 @@ int render_main(int argc, char **argv)
         return CLI_USAGE;
     }
     int rc = render_file(&s, out_path);
+#ifdef FULGUR_HAVE_GPU
+    if (rc == CLI_OK && png_path &&
+        render_picture(&s, png_path, has_png_time, png_time, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        rc = CLI_RUNTIME;
+    }
+#else
+    (void)png_time;
+#endif
     scene_deinit(&s);
     return rc;
 }

@@ -44,6 +44,14 @@ typedef struct scene_discharge {
     size_t node_count;
 } scene_discharge;
 
+/* What the picture looks through (the "camera" block). */
+typedef struct scene_camera {
+    bool given;                /* false: none in the file (see scene_camera_framing) */
+    double eye_m[3], target_m[3];
+    double up[3];              /* default +z */
+    double fov_y_deg;          /* vertical field of view, default 45 */
+} scene_camera;
+
 typedef struct scene {
     double sample_rate_hz;
     uint32_t channels;
@@ -60,6 +68,7 @@ typedef struct scene {
     size_t pose_count;
     scene_discharge *discharges;
     size_t discharge_count;
+    scene_camera camera;
     cJSON *json;               /* the parsed document the generator specs live in */
 } scene;
 
@@ -88,6 +97,13 @@ void scene_deinit(scene *s);
  * normalised lerp, held before the first and after the last pose; velocity
  * is the path's slope (0 when held). */
 void scene_listener_at(const scene *s, double t_s, fg_listener *out);
+
+/* The scene's camera, or when it gives none a default framing of the
+ * built trees: their bounding sphere fills the 45 degree vertical view,
+ * seen level from the listener's side (from the trees' centre towards the
+ * listener's first position; behind the listener's forward when that is
+ * straight above or below), up +z. */
+void scene_camera_framing(const scene *s, scene_camera *out);
 
 /* The engine configuration the scene asks for (rate, block, channels, the
  * air); voices and segments are left at 0 (the defaults) for the caller. */

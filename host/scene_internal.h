@@ -9,6 +9,9 @@
 /* "listener" (item may be NULL: the default pose) into s->poses. */
 int scene_parse_listener(const cJSON *item, scene *s, char *err, size_t err_size);
 
+/* "camera" (item may be NULL: none given) into s->camera. */
+int scene_parse_camera(const cJSON *item, scene *s, char *err, size_t err_size);
+
 /* One element of "discharges", at path, into *out (zeroed on entry; owns
  * out->nodes on success). Reads s's seed for the default seed. */
 int scene_parse_discharge(const cJSON *item, const char *path, size_t index, const scene *s,

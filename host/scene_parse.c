@@ -11,7 +11,7 @@
 static const char *const top_keys[] = {
     "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
     "temperature_c", "humidity", "pressure", "propagation", "listener", "discharges",
-    "random", "description", NULL};
+    "random", "camera", "description", NULL};
 
 static int syntax_error(const char *text, const char *at, const char *what, char *err,
                         size_t err_size)
@@ -138,6 +138,8 @@ int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err
                                   err_size) == 0 &&
              parse_discharges(json, out, err, err_size) == 0 &&
              scene_parse_random(json, out, err, err_size) == 0 &&
+             scene_parse_camera(cJSON_GetObjectItemCaseSensitive(json, "camera"), out, err,
+                                err_size) == 0 &&
              check_duration(out, err, err_size) == 0)
         rc = 0;
     out->json = json;

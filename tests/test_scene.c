@@ -30,6 +30,16 @@ static const struct {
     const char *message;
 } bad[] = {
     {WITH_SPARK("\"sample_rate\":1000,"), "sample_rate: 1000 is outside 8000..384000"},
+    {WITH_SPARK("\"camera\":{\"target\":[0,1,0]},"),
+     "camera.eye: required (where the camera is, [x, y, z])"},
+    {WITH_SPARK("\"camera\":{\"eye\":[0,1,0],\"target\":[0,1,0]},"),
+     "camera.target: must differ from camera.eye"},
+    {WITH_SPARK("\"camera\":{\"eye\":[0,0,0],\"target\":[0,0,5]},"),
+     "camera.up: is parallel to the view (eye to target)"},
+    {WITH_SPARK("\"camera\":{\"eye\":[0,0,0],\"target\":[0,1,0],\"fov\":180},"),
+     "camera.fov: 180 is outside (0, 179)"},
+    {WITH_SPARK("\"camera\":{\"eye\":[0,0,0],\"target\":[0,1,0],\"zoom\":2},"),
+     "camera.zoom: unknown key (known: eye, target, up, fov)"},
     {WITH_SPARK("\"sample_rate\":1e999,"),
      "sample_rate: expected an integer in 8000..384000, not infinity"},
     {WITH_SPARK("\"channels\":3,"), "channels: 3 is outside 1..2"},
@@ -43,8 +53,8 @@ static const struct {
     {WITH_SPARK("\"channels\":1,\"channels\":2,"), "channels: given twice"},
     {WITH_SPARK("\"smaple_rate\":48000,"),
      "smaple_rate: unknown key (known: sample_rate, channels, block, duration, seed, gain, "
-     "speed_of_sound, temperature_c, humidity, pressure, propagation, listener, discharges, random, "
-     "description)"},
+     "speed_of_sound, temperature_c, humidity, pressure, propagation, listener, discharges, "
+     "random, camera, description)"},
     {WITH_SPARK("\"humidity\":0,"), "humidity: 0 is outside (0, 100]"},
     {WITH_SPARK("\"propagation\":{\"refraction\":{\"radius\":5000}},"),
      "propagation.refraction.radius: 5000 is outside 20000..200000"},
