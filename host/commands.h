@@ -13,5 +13,6 @@ enum {
 int render_main(int argc, char **argv);
 int analyze_main(int argc, char **argv);
 int run_main(int argc, char **argv);
+int view_main(int argc, char **argv);
 
 #endif

@@ -11,6 +11,9 @@ static const struct {
 } commands[] = {
     {"render", render_main, "render a scene to a 32-bit float WAV through the real-time engine"},
     {"run", run_main, "run a scene in real time, as a VR application would, and report timing as JSON"},
+#ifdef FULGUR_HAVE_GPU
+    {"view", view_main, "show and sound discharges in a window (or headless): place charges, trigger"},
+#endif
     {"analyze", analyze_main, "write a WAV's waveform envelope and spectrogram for gnuplot"},
 };
 

@@ -6,6 +6,21 @@
 #include "audio_file.h"
 #include "run_driver.h"
 
+int run_driver_parse(const char *text, run_audio_kind *kind, const char **wav_path)
+{
+    if (strcmp(text, "null") == 0) {
+        *kind = RUN_AUDIO_NULL;
+    } else if (strcmp(text, "raw:-") == 0) {
+        *kind = RUN_AUDIO_RAW;
+    } else if (strncmp(text, "wav:", 4) == 0 && text[4]) {
+        *kind = RUN_AUDIO_WAV;
+        *wav_path = text + 4;
+    } else {
+        return -1;
+    }
+    return 0;
+}
+
 int run_driver_start(run_driver *d, run_audio_kind kind, const char *path, double rate_hz,
                      uint32_t channels, uint32_t block_frames, float gain, char *err,
                      size_t err_size)

@@ -26,6 +26,10 @@ typedef struct run_driver {
     SNDFILE *wav;
 } run_driver;
 
+/* Reads "null", "wav:FILE" or "raw:-" (the --audio of run and view);
+ * *wav_path points into text. Returns 0, or -1 (nothing written). */
+int run_driver_parse(const char *text, run_audio_kind *kind, const char **wav_path);
+
 /* Starts the driver for blocks of up to block_frames; path is the WAV's.
  * Returns 0, or -1 with a message in err (nothing is left open).
  * [main-thread] */

@@ -46,21 +46,6 @@ static int parse_positive(const char *text, double hi, double *out)
     return 0;
 }
 
-static int parse_audio(const char *text, run_options *o)
-{
-    if (strcmp(text, "null") == 0) {
-        o->audio = RUN_AUDIO_NULL;
-    } else if (strcmp(text, "raw:-") == 0) {
-        o->audio = RUN_AUDIO_RAW;
-    } else if (strncmp(text, "wav:", 4) == 0 && text[4]) {
-        o->audio = RUN_AUDIO_WAV;
-        o->wav_path = text + 4;
-    } else {
-        return -1;
-    }
-    return 0;
-}
-
 int run_parse_options(int argc, char **argv, run_options *o)
 {
     static const uint32_t blocks[] = {64, 128, 256, 512};
@@ -80,7 +65,7 @@ int run_parse_options(int argc, char **argv, run_options *o)
         } else if (!v) {
             bad = 1;
         } else if (strcmp(a, "--audio") == 0) {
-            bad = parse_audio(v, o);
+            bad = run_driver_parse(v, &o->audio, &o->wav_path);
         } else if (strcmp(a, "--block") == 0) {
             bad = parse_u32(v, blocks, 4, &o->block_frames);
         } else if (strcmp(a, "--rate") == 0) {

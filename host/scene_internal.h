@@ -31,4 +31,8 @@ int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[
 int scene_check_tree(const fg_node *nodes, size_t count, const char *nodes_path, char *err,
                      size_t err_size);
 
+/* "random" (absent: nothing to do): its discharges, drawn from its seed,
+ * appended to s->discharges. The template is kept inside json. */
+int scene_parse_random(cJSON *json, scene *s, char *err, size_t err_size);
+
 #endif

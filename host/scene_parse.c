@@ -11,7 +11,7 @@
 static const char *const top_keys[] = {
     "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
     "temperature_c", "humidity", "pressure", "propagation", "listener", "discharges",
-    "camera", "description", NULL};
+    "random", "camera", "description", NULL};
 
 static int syntax_error(const char *text, const char *at, const char *what, char *err,
                         size_t err_size)
@@ -78,8 +78,11 @@ static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_siz
 static int parse_discharges(const cJSON *json, scene *s, char *err, size_t err_size)
 {
     const cJSON *list = cJSON_GetObjectItemCaseSensitive(json, "discharges");
+    if (!list && cJSON_GetObjectItemCaseSensitive(json, "random"))
+        return 0; /* random discharges only */
     if (!list)
-        return json_fail(err, err_size, "discharges", "required (an array of discharges)");
+        return json_fail(err, err_size, "discharges",
+                         "required (an array of discharges), unless \"random\" is given");
     if (!cJSON_IsArray(list) || cJSON_GetArraySize(list) == 0)
         return json_fail(err, err_size, "discharges", "expected a non-empty array");
     size_t n = (size_t)cJSON_GetArraySize(list);
@@ -134,6 +137,7 @@ int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err
              scene_parse_listener(cJSON_GetObjectItemCaseSensitive(json, "listener"), out, err,
                                   err_size) == 0 &&
              parse_discharges(json, out, err, err_size) == 0 &&
+             scene_parse_random(json, out, err, err_size) == 0 &&
              scene_parse_camera(cJSON_GetObjectItemCaseSensitive(json, "camera"), out, err,
                                 err_size) == 0 &&
              check_duration(out, err, err_size) == 0)
