@@ -14,6 +14,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 for audio in null "wav:$tmp/v.wav" raw:-; do
     valgrind -q --leak-check=full --errors-for-leak-kinds=all --error-exitcode=1 \
+        --suppressions="$(dirname "$0")/valgrind.supp" \
         "$fulgur" run "$scene" --seconds 0.5 --audio "$audio" --report "$tmp/r.json" >/dev/null ||
         { echo "valgrind failed with --audio $audio"; exit 1; }
     # the bolt (at 3 km, heard from 8.7 s) is still sounding at the end
