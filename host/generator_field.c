@@ -9,6 +9,9 @@
 #include "fulgur/fulgur.h"
 #include "generator.h"
 #include "generator_field.h"
+#ifdef FULGUR_HOST_GPU
+#include "generator_field_gpu.h"
+#endif
 
 typedef struct ctx {
     const char *path;
@@ -213,9 +216,27 @@ static int parse_growth(const ctx *c, const cJSON *spec, fg_growth_config *g, in
     return 0;
 }
 
-/* Sets the shapes, solves and grows. */
+enum { SOLVER_CPU = 0, SOLVER_GPU = 1 };
+
+/* "solver": "cpu" (the default) or "gpu". */
+static int parse_solver(const ctx *c, const cJSON *spec, int dbm, int *solver)
+{
+    static const char *const names[] = {"cpu", "gpu"};
+    if (pick_name(c, spec, "solver", "solver", names, 2, solver))
+        return -1;
+#ifndef FULGUR_HOST_GPU
+    if (*solver == SOLVER_GPU)
+        return fail(c, "solver", "\"gpu\" needs a fulgur built with gpu/ (FULGUR_GPU=ON)");
+#endif
+    if (*solver == SOLVER_GPU && dbm)
+        return fail(c, "solver", "\"gpu\" grows Matsuyama leaders only: DBM changes the "
+                                 "field at every step, use \"cpu\"");
+    return 0;
+}
+
+/* Sets the shapes, solves (on the CPU, or the GPU) and grows. */
 static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes, size_t count,
-               const fg_growth_config *growth, int dbm, fg_tree *out)
+               const fg_growth_config *growth, int dbm, int solver, fg_tree *out)
 {
     fg_field *f = NULL;
     fg_result r = fg_field_create(grid, &f);
@@ -239,7 +260,22 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
                     "needs at least one \"origin\" and one \"target\" shape, all origins at one "
                     "potential and all targets at another");
     }
-    fg_solve_report rep;
+    fg_solve_report rep = {0};
+#ifdef FULGUR_HOST_GPU
+    if (solver == SOLVER_GPU) {
+        char msg[256] = "";
+        r = gen_field_gpu_grow(f, growth, out, &rep.residual, msg, sizeof msg);
+        fg_field_destroy(f);
+        if (r == FG_ERR_UNREACHABLE)
+            return fail(c, "shapes", "the target cannot be reached from the origin");
+        if (r != FG_OK)
+            return fail(c, "solver", "the GPU solve or growth failed: %s (%s)",
+                        fg_result_str(r), msg);
+        return 0;
+    }
+#else
+    (void)solver;
+#endif
     r = fg_field_solve(f, NULL, &rep);
     if (r == FG_OK) {
         if (dbm) {
@@ -264,16 +300,16 @@ static int generate_preset(fg_preset preset, const cJSON *spec, const char *path
                            const gen_context *gc, fg_tree *out, char *err, size_t err_size)
 {
     ctx c = {path, err, err_size};
-    int size = FG_FIELD_DEFAULT_SIZE, dbm = 0;
+    int size = FG_FIELD_DEFAULT_SIZE, dbm = 0, solver = SOLVER_CPU;
     if (integer(&c, spec, "size", "size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size))
         return -1;
     fg_discharge_setup s;
     if (fg_discharge_preset(preset, size, &s) != FG_OK)
         return fail(&c, "size", "must be %d..%d", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE);
     s.growth.seed = gc->seed;
-    if (parse_growth(&c, spec, &s.growth, &dbm))
+    if (parse_growth(&c, spec, &s.growth, &dbm) || parse_solver(&c, spec, dbm, &solver))
         return -1;
-    return run(&c, &s.grid, s.shapes, s.shape_count, &s.growth, dbm, out);
+    return run(&c, &s.grid, s.shapes, s.shape_count, &s.growth, dbm, solver, out);
 }
 
 int gen_spark_gap(const cJSON *spec, const char *path, const gen_context *gc, fg_tree *out,
@@ -312,8 +348,8 @@ int gen_field(const cJSON *spec, const char *path, const gen_context *gc, fg_tre
     if (!cJSON_IsObject(growth) || !cJSON_GetObjectItemCaseSensitive(growth, "step"))
         return fail(&c, "growth.step", "is required: the segment length in metres");
     fg_growth_config g = {.seed = gc->seed};
-    int dbm = 0;
-    if (parse_growth(&c, spec, &g, &dbm))
+    int dbm = 0, solver = SOLVER_CPU;
+    if (parse_growth(&c, spec, &g, &dbm) || parse_solver(&c, spec, dbm, &solver))
         return -1;
-    return run(&c, &grid, shapes, (size_t)count, &g, dbm, out);
+    return run(&c, &grid, shapes, (size_t)count, &g, dbm, solver, out);
 }

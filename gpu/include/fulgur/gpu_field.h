@@ -10,9 +10,15 @@
  * grows. Only the values a growth model asks for come back (a gather
  * kernel), never the whole grid per step.
  *
- * Precision: the potential is single precision on the GPU; a converged
- * solve agrees with the CPU solver's to about 1e-5 (maximum absolute,
- * normalised units). */
+ * Precision: the potential is single precision on the GPU. A relative
+ * residual of 1e-5 (the default) leaves errors up to about 1e-4 at 65^3
+ * (maximum absolute, normalised units); 1e-6 agrees with a tightly solved
+ * CPU field to about 1e-5. Single precision reaches about 5e-7.
+ *
+ * The fallback: a V-cycle that does not halve the residual (a thin
+ * Dirichlet tree the coarse levels cannot see, small electrodes) hands phi
+ * to MGPCG, which continues from it with the same cycle as preconditioner.
+ * See docs/gpu-field.md. */
 #ifndef FULGUR_GPU_FIELD_H
 #define FULGUR_GPU_FIELD_H
 
@@ -27,6 +33,7 @@ typedef struct fgg_solve_config {
     double tolerance;     /* relative residual to reach; 0 means 1e-5 */
     int max_cycles;       /* V-cycles (or CG iterations) at most; 0 means 100 */
     int cold;             /* nonzero: free nodes start from 0, not the last solution */
+    int vcycles_only;     /* nonzero: no MGPCG fallback (to compare; may not converge) */
 } fgg_solve_config;
 
 typedef struct fgg_solve_report {
