@@ -11,8 +11,8 @@
 #include <cmocka.h>
 
 #include "abe_lowpass_internal.h"
-#include "vec3_internal.h"
-#include "rng_internal.h"
+#include "fg_math.h"
+#include "fg_rng.h"
 
 #define N 48000
 

@@ -11,7 +11,7 @@
 #include <cmocka.h>
 
 #include "absorb_filter_internal.h"
-#include "vec3_internal.h"
+#include "fg_math.h"
 
 /* Stated tolerance: 0.25 dB where the target is at or above -40 dB, 1 dB
  * down to the -60 dB floor and as excess over the floor beyond it. */

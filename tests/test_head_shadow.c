@@ -8,7 +8,7 @@
 
 #include <cmocka.h>
 
-#include "vec3_internal.h"
+#include "fg_math.h"
 #include "head_shadow_internal.h"
 
 #define FS 48000.0

@@ -9,7 +9,7 @@
 
 #include <cmocka.h>
 
-#include "vec3_internal.h"
+#include "fg_math.h"
 #include "iir_internal.h"
 
 #define FS 48000.0

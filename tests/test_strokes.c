@@ -19,7 +19,7 @@
 #include <string.h>
 
 #include "fulgur/engine.h"
-#include "rng_internal.h"
+#include "fg_rng.h"
 #include "strokes_internal.h"
 
 #define DRAWS 10000

@@ -9,7 +9,7 @@
 
 #include <cmocka.h>
 
-#include "rng_internal.h"
+#include "fg_rng.h"
 #include "turbulence_internal.h"
 
 #define POINTS 40000

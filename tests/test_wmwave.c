@@ -12,7 +12,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "rng_internal.h"
+#include "fg_rng.h"
 #include "wmwave_internal.h"
 
 #define PI 3.14159265358979323846

@@ -2,7 +2,7 @@
 #include <string.h>
 
 #include "abe_lowpass_internal.h"
-#include "vec3_internal.h"
+#include "fg_math.h"
 
 #define MASK (FG_ABE_FIR_HISTORY - 1)
 

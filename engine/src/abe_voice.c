@@ -1,7 +1,7 @@
 #include <math.h>
 
 #include "abe_voice_internal.h"
-#include "vec3_internal.h"
+#include "fg_math.h"
 
 #define SIXTY_DB 6.907755278982137 /* ln 1000 */
 #define MIN_DISTANCE_M 1.0

@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "absorb_filter_internal.h"
-#include "vec3_internal.h"
+#include "fg_math.h"
 
 #define NP (4 * FG_IIR_MAX_SECTIONS) /* u1, u2 for numerator and denominator */
 #define U_MAX 12.0 /* parameters stay where tanh still has a slope */

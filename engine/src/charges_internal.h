@@ -5,8 +5,8 @@
 #include <stddef.h>
 
 #include "fulgur/charges.h"
-#include "rng_internal.h"
-#include "vec3_internal.h"
+#include "fg_rng.h"
+#include "fg_vec3.h"
 
 /* Fills e[k] = |Phi(cand[k]) - phi_tip| / d for the m candidates, or 0 where
  * sign * (Phi(cand[k]) - phi_tip) <= 0 (a step back up the potential). */

@@ -103,8 +103,8 @@ fg_result fg_engine_create(const fg_engine_config *config, fg_engine **out)
               e->main_index && e->scratch.path_m && e->scratch.junction && e->scratch.main &&
               e->scratch.order && e->scratch.order_tmp;
     ok = ok && fg_arena_init(&e->arena, cfg.segment_capacity, cfg.max_voices);
-    ok = ok && fg_ring_init(&e->inbox, cfg.max_voices);
-    ok = ok && fg_ring_init(&e->garbage, cfg.max_voices);
+    ok = ok && fg_ring_init(&e->inbox, cfg.max_voices, sizeof(fg_voice *));
+    ok = ok && fg_ring_init(&e->garbage, cfg.max_voices, sizeof(fg_voice *));
     fg_air air = {cfg.air_temperature_k - 273.15, cfg.air_humidity_pct, cfg.air_pressure_kpa};
     r = ok ? fg_bus_set_init(&e->buses, cfg.channels, cfg.max_block_frames, cfg.sample_rate_hz,
                              cfg.speed_of_sound_m_s, &air)
@@ -195,7 +195,7 @@ fg_result fg_engine_post(fg_engine *e, const fg_discharge *d, fg_voice_id *id)
     fg_prepare_voice(e, v, d);
     v->generation++;
     e->live[v->slot] = 1;
-    bool pushed = fg_ring_push(&e->inbox, v);
+    bool pushed = fg_ring_push(&e->inbox, &v);
     (void)pushed; /* space was checked above and only this thread pushes */
     count(&e->counters.posted);
     if (id)
@@ -220,9 +220,8 @@ size_t fg_engine_collect(fg_engine *e)
     if (!e)
         return 0;
     size_t n = 0;
-    void *item;
-    while (fg_ring_pop(&e->garbage, &item)) {
-        fg_voice *v = item;
+    fg_voice *v;
+    while (fg_ring_pop(&e->garbage, &v)) {
         fg_arena_free(&e->arena, v->extent, v->event_count);
         e->live[v->slot] = 0;
         e->free_slots[e->free_count++] = v->slot;
@@ -257,10 +256,11 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
     fg_fp_env env = fg_fp_env_flush_denormals();
     uint64_t start = atomic_load_explicit(&e->frames, memory_order_relaxed);
 
-    void *item;
-    for (uint32_t k = 0; k < e->cfg.max_adopt_per_block && fg_ring_pop(&e->inbox, &item); k++) {
-        fg_voice_adopt(e, item, (double)start);
-        e->active[e->active_count++] = item;
+    fg_voice *adopted;
+    for (uint32_t k = 0; k < e->cfg.max_adopt_per_block && fg_ring_pop(&e->inbox, &adopted);
+         k++) {
+        fg_voice_adopt(e, adopted, (double)start);
+        e->active[e->active_count++] = adopted;
         count(&e->counters.adopted);
     }
 
@@ -280,7 +280,7 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
         fg_voice *v = e->active[i];
         if (fg_voice_render(e, v, &ctx)) {
             e->active[i] = e->active[--e->active_count];
-            bool pushed = fg_ring_push(&e->garbage, v);
+            bool pushed = fg_ring_push(&e->garbage, &v);
             (void)pushed; /* the ring holds max_voices: never full */
             count(&e->counters.finished);
         } else {

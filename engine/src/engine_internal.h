@@ -10,7 +10,7 @@
 #include "bus_internal.h"
 #include "fulgur/engine.h"
 #include "listener_internal.h"
-#include "ring_internal.h"
+#include "fg_ring.h"
 #include "sort_internal.h"
 #include "voice_internal.h"
 

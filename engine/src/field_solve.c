@@ -10,6 +10,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "fg_math.h"
 #include "field_internal.h"
 #include "fp_env_internal.h"
 
@@ -96,7 +97,7 @@ static fg_result sor(fg_field *f, double tol, int max_sweeps, double omega,
     if (omega == 0.0) {
         int n = L->n[0] > L->n[1] ? L->n[0] : L->n[1];
         n = n > L->n[2] ? n : L->n[2];
-        omega = 2.0 / (1.0 + sin(3.14159265358979323846 / (n - 1)));
+        omega = 2.0 / (1.0 + sin(FG_PI / (n - 1)));
     }
     rep->initial_residual = rep->residual = residual_of(f);
     rep->iterations = 0;

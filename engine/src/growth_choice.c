@@ -3,12 +3,12 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "fg_math.h"
 #include "growth_internal.h"
 
-#define PI 3.14159265358979323846
 #define DEFAULT_GAMMA 2.5
 #define DEFAULT_CANDIDATES 8
-#define DEFAULT_CONE_RAD (PI / 2.0)
+#define DEFAULT_CONE_RAD (FG_PI / 2.0)
 #define DEFAULT_BRANCH_PROBABILITY 0.1
 #define DEFAULT_MAX_TIPS 16
 #define DEFAULT_BRANCH_STEPS 6
@@ -24,7 +24,7 @@ fg_result fg_growth_resolve(const fg_growth_config *in, fg_growth_config *out)
         !isfinite(c.branch_probability) || !isfinite(c.branch_length_m) || !isfinite(c.eta))
         return FG_ERR_NOT_FINITE;
     if (!(c.step_m > 0.0) || c.gamma < 0.0 || c.candidates < 0 ||
-        c.candidates > FG_GROWTH_MAX_CANDIDATES || c.cone_rad < 0.0 || c.cone_rad > PI ||
+        c.candidates > FG_GROWTH_MAX_CANDIDATES || c.cone_rad < 0.0 || c.cone_rad > FG_PI ||
         c.branch_probability < 0.0 || c.branch_probability > 1.0 || c.max_tips < 0 ||
         c.branch_length_m < 0.0 || c.max_steps < 0 || c.eta < 0.0 || c.dbm_global_every < 0 ||
         c.dbm_relax_radius < 0)
@@ -68,7 +68,7 @@ void fg_cone_directions(fg_rng *rng, const double a[3], double half_rad, int n, 
         /* Uniform on the cap: cos(theta) uniform in [cos(half), 1]. */
         double ct = 1.0 - fg_rng_uniform(rng) * (1.0 - c0);
         double st = sqrt(fmax(0.0, 1.0 - ct * ct));
-        double ph = 2.0 * PI * fg_rng_uniform(rng);
+        double ph = 2.0 * FG_PI * fg_rng_uniform(rng);
         double cu = st * cos(ph), cv = st * sin(ph);
         for (int i = 0; i < 3; i++)
             dirs[3 * k + i] = ct * a[i] + cu * u[i] + cv * v[i];

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "fg_array.h"
 #include "field_internal.h"
 #include "growth_internal.h"
 
@@ -37,18 +38,13 @@ static void ijk_of(const fg_level *L, size_t id, int ijk[3])
     ijk[2] = (int)(id / ((size_t)L->n[0] * (size_t)L->n[1]));
 }
 
-static fg_result grow_array(void **p, size_t *cap, size_t need, size_t elem)
+/* Room for one more channel node. */
+static fg_result reserve_channel(dbm *d)
 {
-    if (need <= *cap)
-        return FG_OK;
-    size_t cap2 = *cap ? 2 * *cap : 256;
-    while (cap2 < need)
-        cap2 *= 2;
-    void *q = realloc(*p, cap2 * elem);
-    if (!q)
+    lattice_node *chan = fg_array_grow(d->chan, &d->cap, d->count + 1, sizeof *chan, 256);
+    if (!chan)
         return FG_ERR_NO_MEMORY;
-    *p = q;
-    *cap = cap2;
+    d->chan = chan;
     return FG_OK;
 }
 
@@ -58,7 +54,7 @@ static fg_result add_node(dbm *d, size_t id, int32_t parent)
 {
     fg_field *f = d->f;
     const fg_level *L = &f->level[0];
-    fg_result r = grow_array((void **)&d->chan, &d->cap, d->count + 1, sizeof *d->chan);
+    fg_result r = reserve_channel(d);
     if (r != FG_OK)
         return r;
     lattice_node *nd = &d->chan[d->count++];
@@ -86,10 +82,11 @@ static fg_result add_node(dbm *d, size_t id, int32_t parent)
                 }
                 if (f->label[qid] != FG_REGION_FREE || d->in_perim[qid])
                     continue;
-                r = grow_array((void **)&d->perim, &d->perim_cap, d->perim_count + 1,
-                               sizeof *d->perim);
-                if (r != FG_OK)
-                    return r;
+                size_t *perim = fg_array_grow(d->perim, &d->perim_cap, d->perim_count + 1,
+                                              sizeof *perim, 256);
+                if (!perim)
+                    return FG_ERR_NO_MEMORY;
+                d->perim = perim;
                 d->perim[d->perim_count++] = qid;
                 d->in_perim[qid] = 1;
             }
@@ -268,7 +265,7 @@ fg_result fg_grow_dbm(fg_field *f, const fg_growth_config *config, fg_tree *out,
     size_t hit = 0;
     if (r == FG_OK) {
         /* The connection: the touched target node, child of the last one. */
-        r = grow_array((void **)&d.chan, &d.cap, d.count + 1, sizeof *d.chan);
+        r = reserve_channel(&d);
         if (r == FG_OK) {
             lattice_node *last = &d.chan[d.count - 1];
             last->children++;

@@ -8,7 +8,7 @@
 
 #include "fulgur/growth.h"
 #include "pick_internal.h"
-#include "rng_internal.h"
+#include "fg_rng.h"
 #include "tree_internal.h"
 
 typedef struct fg_nodebuf {

@@ -2,11 +2,11 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "fg_math.h"
 #include "growth_internal.h"
 
 #define BLOCKED_LIMIT 5
 #define SURFACE_BISECTIONS 8
-#define PI 3.14159265358979323846
 
 typedef struct tip {
     size_t node;
@@ -117,7 +117,7 @@ static fg_result step_tip(grower *g, int t, int *advance)
     for (int a = 0; a < 3; a++)
         axis[a] = len > 0.0 ? axis[a] / len : tp->dir[a];
     double half = 0.5 * g->c.cone_rad * (1 + tp->blocked);
-    fg_cone_directions(&g->rng, axis, half < PI ? half : PI, n, dirs);
+    fg_cone_directions(&g->rng, axis, half < FG_PI ? half : FG_PI, n, dirs);
     r = fg_matsuyama_weigh(g->src, x, dirs, n, g->c.step_m, g->c.gamma, w, &hit);
     if (r != FG_OK)
         return r;

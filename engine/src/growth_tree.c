@@ -1,18 +1,15 @@
 /* The node buffer a tree is grown in before it is handed out. */
 #include <stdlib.h>
 
+#include "fg_array.h"
 #include "growth_internal.h"
 
 fg_result fg_nodebuf_push(fg_nodebuf *b, const double x[3], int32_t parent, size_t *index)
 {
-    if (b->count == b->cap) {
-        size_t cap = b->cap ? 2 * b->cap : 256;
-        fg_node *v = realloc(b->v, cap * sizeof *v);
-        if (!v)
-            return FG_ERR_NO_MEMORY;
-        b->v = v;
-        b->cap = cap;
-    }
+    fg_node *v = fg_array_grow(b->v, &b->cap, b->count + 1, sizeof *v, 256);
+    if (!v)
+        return FG_ERR_NO_MEMORY;
+    b->v = v;
     b->v[b->count] = (fg_node){x[0], x[1], x[2], parent, 0};
     if (index)
         *index = b->count;

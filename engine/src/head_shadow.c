@@ -1,6 +1,6 @@
 #include <math.h>
 
-#include "vec3_internal.h"
+#include "fg_math.h"
 #include "head_shadow_internal.h"
 
 double fg_head_shadow_db(const double ear_axis[3], const double to_source[3])

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include "designer_internal.h"
+#include "fg_array.h"
 
 #define BRANCH_ANGLE_MIN_DEG 20.0
 #define BRANCH_ANGLE_MAX_DEG 50.0
@@ -55,14 +56,10 @@ static fg_result add(walker *w, fg_vec3 q, size_t parent, uint32_t flags, uint32
     if (r != FG_OK || depth >= w->p->branch_depth || w->p->branch_probability < 0 ||
         fg_rng_uniform(&w->rng) >= w->p->branch_probability)
         return r;
-    if (w->nspawn == w->spawn_cap) {
-        size_t cap = w->spawn_cap ? 2 * w->spawn_cap : 256;
-        spawn *s = realloc(w->spawns, cap * sizeof *s);
-        if (!s)
-            return FG_ERR_NO_MEMORY;
-        w->spawns = s;
-        w->spawn_cap = cap;
-    }
+    spawn *s = fg_array_grow(w->spawns, &w->spawn_cap, w->nspawn + 1, sizeof *s, 256);
+    if (!s)
+        return FG_ERR_NO_MEMORY;
+    w->spawns = s;
     w->spawns[w->nspawn++] = (spawn){*index, dir, depth + 1};
     return FG_OK;
 }

@@ -1,6 +1,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "fg_vec3.h"
 #include "listener_internal.h"
 
 static void pack(const fg_listener *p, uint64_t w[FG_POSE_WORDS])
@@ -26,18 +27,6 @@ void fg_listener_cell_init(fg_listener_cell *cell, const fg_listener *pose)
         atomic_init(&cell->words[i], w[i]);
 }
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 fg_result fg_listener_check(const fg_listener *p)
 {
     if (!p)
@@ -50,13 +39,12 @@ fg_result fg_listener_check(const fg_listener *p)
         if (!isfinite(d))
             return FG_ERR_NOT_FINITE;
     }
-    double f = sqrt(dot3(p->forward, p->forward)), u = sqrt(dot3(p->up, p->up));
+    fg_vec3 forward = fg_v3_load(p->forward), up = fg_v3_load(p->up);
+    double f = fg_v3_len(forward), u = fg_v3_len(up);
     if (f == 0 || u == 0)
         return FG_ERR_ARGUMENT;
-    double r[3];
-    cross3(p->forward, p->up, r);
     /* parallel within about 0.06 degrees */
-    if (sqrt(dot3(r, r)) < 1e-3 * f * u)
+    if (fg_v3_len(fg_v3_cross(forward, up)) < 1e-3 * f * u)
         return FG_ERR_ARGUMENT;
     return FG_OK;
 }
@@ -105,11 +93,9 @@ void fg_listener_cell_read(const fg_listener_cell *cell, fg_listener *pose, unsi
 void fg_listener_ears(const fg_listener *p, unsigned channels, double spacing_m, fg_ears *out)
 {
     out->count = channels;
-    double r[3];
-    cross3(p->forward, p->up, r);
-    double norm = sqrt(dot3(r, r));
-    for (int k = 0; k < 3; k++)
-        out->right[k] = r[k] / norm;
+    fg_vec3 r = fg_v3_cross(fg_v3_load(p->forward), fg_v3_load(p->up));
+    double norm = fg_v3_len(r);
+    fg_v3_store(fg_v3(r.x / norm, r.y / norm, r.z / norm), out->right);
     if (channels == 1) {
         memcpy(out->pos[0], p->position, sizeof out->pos[0]);
         return;

@@ -14,7 +14,7 @@
 #include <stdint.h>
 
 #include "fulgur/engine.h"
-#include "ring_internal.h"
+#include "fg_ring.h"
 
 #define FG_POSE_WORDS 12
 

@@ -1,6 +1,6 @@
 #include <math.h>
 
-#include "vec3_internal.h"
+#include "fg_math.h"
 #include "refraction_internal.h"
 
 static int straight(double radius_m)

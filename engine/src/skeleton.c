@@ -1,6 +1,7 @@
 /* Skeleton polylines: storage, arclength queries, the random skeleton. */
 #include <stdlib.h>
 
+#include "fg_array.h"
 #include "skeleton_internal.h"
 
 #define PROJECT_WINDOW 16
@@ -15,18 +16,17 @@ fg_result fg_skeleton_push(fg_skeleton *k, fg_vec3 q)
             return FG_OK;
         s = k->s[k->n - 1] + d;
     }
-    if (k->n == k->cap) {
-        size_t cap = k->cap ? 2 * k->cap : 64;
-        fg_vec3 *p = realloc(k->p, cap * sizeof *p);
-        if (!p)
-            return FG_ERR_NO_MEMORY;
-        k->p = p;
-        double *sv = realloc(k->s, cap * sizeof *sv);
-        if (!sv)
-            return FG_ERR_NO_MEMORY;
-        k->s = sv;
-        k->cap = cap;
-    }
+    /* two arrays of one capacity: the second grows to the first's */
+    size_t cap = k->cap, cap_s = k->cap;
+    fg_vec3 *p = fg_array_grow(k->p, &cap, k->n + 1, sizeof *p, 64);
+    if (!p)
+        return FG_ERR_NO_MEMORY;
+    k->p = p;
+    double *sv = fg_array_grow(k->s, &cap_s, cap, sizeof *sv, 64);
+    if (!sv)
+        return FG_ERR_NO_MEMORY;
+    k->s = sv;
+    k->cap = cap;
     k->p[k->n] = q;
     k->s[k->n] = s;
     k->n++;

@@ -5,7 +5,7 @@
 #include <stddef.h>
 
 #include "fulgur/result.h"
-#include "vec3_internal.h"
+#include "fg_vec3.h"
 
 typedef struct fg_skeleton {
     fg_vec3 *p;    /* points, root first */

@@ -63,7 +63,7 @@ double fg_strokes_draw_interval_s(fg_rng *rng)
 /* The strokes take a stream of their own from the seed, so that they depend
  * on the seed alone and a picture can flash with the sound before (or
  * without) the tree being posted. */
-#define STROKE_STREAM 0x9e3779b97f4a7c15ull
+#define STROKE_STREAM FG_SPLITMIX64_GAMMA
 
 uint32_t fg_discharge_stroke_offsets(const fg_discharge *d, double *offsets_s, uint32_t max)
 {

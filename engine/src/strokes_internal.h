@@ -11,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "rng_internal.h"
+#include "fg_rng.h"
 
 #define FG_STROKE_LOGSERIES_P 0.85
 #define FG_STROKE_INTERVAL_UNIT_S 0.010

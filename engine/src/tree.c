@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "fg_array.h"
 #include "fulgur/tree.h"
 #include "tree_internal.h"
 
@@ -127,14 +128,10 @@ fg_result fg_tree_add(fg_tree *t, double x, double y, double z, int32_t parent, 
         return FG_ERR_NOT_FINITE;
     if (t->count == 0 ? parent != -1 : (parent < 0 || (size_t)parent >= t->count))
         return FG_ERR_TREE;
-    if (t->count == t->capacity) {
-        size_t cap = t->capacity * 2;
-        fg_node *grown = realloc(t->nodes, cap * sizeof *grown);
-        if (!grown)
-            return FG_ERR_NO_MEMORY;
-        t->nodes = grown;
-        t->capacity = cap;
-    }
+    fg_node *grown = fg_array_grow(t->nodes, &t->capacity, t->count + 1, sizeof *grown, 16);
+    if (!grown)
+        return FG_ERR_NO_MEMORY;
+    t->nodes = grown;
     t->nodes[t->count] = (fg_node){x, y, z, parent, flags};
     if (index)
         *index = t->count;

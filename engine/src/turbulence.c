@@ -1,20 +1,14 @@
 #include <math.h>
 
+#include "fg_rng.h"
 #include "turbulence_internal.h"
-
-/* splitmix64's finaliser: a bijective mix of 64 bits. */
-static uint64_t mix(uint64_t z)
-{
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
 
 static double lattice(uint64_t seed, int64_t i, int64_t j, int64_t k)
 {
-    uint64_t h = mix(seed ^ mix((uint64_t)i * 0x9e3779b97f4a7c15ull ^
-                                mix((uint64_t)j * 0xc2b2ae3d27d4eb4full ^
-                                    mix((uint64_t)k * 0x165667b19e3779f9ull))));
+    uint64_t h = fg_splitmix64_mix(
+        seed ^ fg_splitmix64_mix((uint64_t)i * FG_SPLITMIX64_GAMMA ^
+                                 fg_splitmix64_mix((uint64_t)j * 0xc2b2ae3d27d4eb4full ^
+                                                   fg_splitmix64_mix((uint64_t)k * 0x165667b19e3779f9ull))));
     return (double)(h >> 11) * (2.0 / 9007199254740992.0) - 1.0; /* 53 bits -> [-1, 1) */
 }
 

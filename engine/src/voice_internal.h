@@ -13,7 +13,7 @@
 
 #include "abe_voice_internal.h"
 #include "fulgur/engine.h"
-#include "rng_internal.h"
+#include "fg_rng.h"
 #include "wmwave_internal.h"
 
 /* Overlapping emissions of one voice: strokes, or repeats of a continuous

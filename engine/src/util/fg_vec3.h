@@ -1,13 +1,12 @@
-/* Small 3-vector helpers shared by the growth models (sim thread). */
-#ifndef FULGUR_VEC3_INTERNAL_H
-#define FULGUR_VEC3_INTERNAL_H
+/* 3-vectors of doubles, by value. fg_v3_load and fg_v3_store convert from
+ * and to the double[3] of the public structs. */
+#ifndef FG_VEC3_H
+#define FG_VEC3_H
 
 #include <math.h>
 
-#include "rng_internal.h"
-
-/* C11 has no M_PI. */
-#define FG_PI 3.14159265358979323846
+#include "fg_math.h"
+#include "fg_rng.h"
 
 typedef struct fg_vec3 {
     double x, y, z;
@@ -16,6 +15,16 @@ typedef struct fg_vec3 {
 static inline fg_vec3 fg_v3(double x, double y, double z)
 {
     return (fg_vec3){x, y, z};
+}
+static inline fg_vec3 fg_v3_load(const double p[3])
+{
+    return fg_v3(p[0], p[1], p[2]);
+}
+static inline void fg_v3_store(fg_vec3 a, double out[3])
+{
+    out[0] = a.x;
+    out[1] = a.y;
+    out[2] = a.z;
 }
 static inline fg_vec3 fg_v3_add(fg_vec3 a, fg_vec3 b)
 {
