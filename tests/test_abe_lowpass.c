@@ -10,7 +10,7 @@
 
 #include <cmocka.h>
 
-#include "abe_lowpass_internal.h"
+#include "air/abe_lowpass_internal.h"
 #include "fg_math.h"
 #include "fg_rng.h"
 

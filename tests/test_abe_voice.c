@@ -11,7 +11,7 @@
 
 #include <cmocka.h>
 
-#include "abe_voice_internal.h"
+#include "sound/abe_voice_internal.h"
 
 #define FS 48000.0
 #define N 96000 /* 2 s */

@@ -10,7 +10,7 @@
 
 #include <cmocka.h>
 
-#include "absorb_filter_internal.h"
+#include "air/absorb_filter_internal.h"
 #include "fg_math.h"
 
 /* Stated tolerance: 0.25 dB where the target is at or above -40 dB, 1 dB

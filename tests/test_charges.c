@@ -7,7 +7,7 @@
 
 #include <cmocka.h>
 
-#include "charges_internal.h"
+#include "growth/charges_internal.h"
 #include "fulgur/charges.h"
 
 /* A cloud: negative charge region above a positive one, and the ground's

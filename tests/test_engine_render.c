@@ -13,7 +13,7 @@
 #include <cmocka.h>
 
 #include "fulgur/fulgur.h"
-#include "wmwave_internal.h"
+#include "sound/wmwave_internal.h"
 
 #define FS 48000.0
 #define C 343.0

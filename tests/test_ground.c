@@ -8,7 +8,7 @@
 
 #include <cmocka.h>
 
-#include "ground_internal.h"
+#include "air/ground_internal.h"
 
 static void test_extra_delay(void **state)
 {

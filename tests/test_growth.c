@@ -12,7 +12,7 @@
 #include <cmocka.h>
 
 #include "fulgur/fulgur.h"
-#include "growth_internal.h"
+#include "growth/growth_internal.h"
 
 typedef struct scene {
     fg_discharge_setup setup;

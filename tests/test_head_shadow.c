@@ -9,7 +9,7 @@
 #include <cmocka.h>
 
 #include "fg_math.h"
-#include "head_shadow_internal.h"
+#include "air/head_shadow_internal.h"
 
 #define FS 48000.0
 #define C 343.0

@@ -10,7 +10,7 @@
 #include <cmocka.h>
 
 #include "fg_math.h"
-#include "iir_internal.h"
+#include "air/iir_internal.h"
 
 #define FS 48000.0
 #define N 9600

@@ -12,13 +12,13 @@
 
 #include <cmocka.h>
 
-#include "abe_lowpass_internal.h"
-#include "absorb_filter_internal.h"
-#include "distance_bands_internal.h"
+#include "air/abe_lowpass_internal.h"
+#include "air/absorb_filter_internal.h"
+#include "air/distance_bands_internal.h"
 #include "engine_fixture.h"
 #include "fulgur/fulgur.h"
-#include "ground_internal.h"
-#include "refraction_internal.h"
+#include "air/ground_internal.h"
+#include "air/refraction_internal.h"
 
 #define FS 48000.0
 #define C 343.0

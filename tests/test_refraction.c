@@ -9,7 +9,7 @@
 #include <cmocka.h>
 
 #include "fulgur/propagation.h"
-#include "refraction_internal.h"
+#include "air/refraction_internal.h"
 
 static void test_shadow_height(void **state)
 {

@@ -20,7 +20,7 @@
 
 #include "fulgur/engine.h"
 #include "fg_rng.h"
-#include "strokes_internal.h"
+#include "sound/strokes_internal.h"
 
 #define DRAWS 10000
 #define Z_999 3.0902

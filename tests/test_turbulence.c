@@ -10,7 +10,7 @@
 #include <cmocka.h>
 
 #include "fg_rng.h"
-#include "turbulence_internal.h"
+#include "air/turbulence_internal.h"
 
 #define POINTS 40000
 #define AMP 0.02

@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "fg_rng.h"
-#include "wmwave_internal.h"
+#include "sound/wmwave_internal.h"
 
 #define PI 3.14159265358979323846
 #define C_M_S 343.0

@@ -1,6 +1,6 @@
 #include <math.h>
 
-#include "ground_internal.h"
+#include "air/ground_internal.h"
 
 void fg_ground_mirror(const double p[3], double out[3])
 {

@@ -1,9 +1,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bus_internal.h"
-#include "head_shadow_internal.h"
-#include "absorb_filter_internal.h"
+#include "core/bus_internal.h"
+#include "air/head_shadow_internal.h"
+#include "air/absorb_filter_internal.h"
 
 /* The band centres: 10 m to 30 km, log-spaced. */
 #define BAND_NEAR_M 10.0

@@ -12,12 +12,12 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "abe_lowpass_internal.h"
-#include "air_absorption_internal.h"
-#include "distance_bands_internal.h"
+#include "air/abe_lowpass_internal.h"
+#include "air/air_absorption_internal.h"
+#include "air/distance_bands_internal.h"
 #include "fulgur/propagation.h"
-#include "iir_internal.h"
-#include "wmwave_internal.h"
+#include "air/iir_internal.h"
+#include "sound/wmwave_internal.h"
 
 enum {
     FG_BUS_DRY = 0,

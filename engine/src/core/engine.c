@@ -6,8 +6,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "engine_internal.h"
-#include "fp_env_internal.h"
+#include "core/engine_internal.h"
+#include "core/fp_env_internal.h"
 
 #define MAX_BLOCK_LIMIT 65536u
 #define MAX_VOICES_LIMIT 65536u

@@ -5,14 +5,14 @@
 #include <stdatomic.h>
 #include <stdint.h>
 
-#include "abe_voice_internal.h"
-#include "arena_internal.h"
-#include "bus_internal.h"
+#include "sound/abe_voice_internal.h"
+#include "core/arena_internal.h"
+#include "core/bus_internal.h"
 #include "fulgur/engine.h"
-#include "listener_internal.h"
+#include "core/listener_internal.h"
 #include "fg_ring.h"
-#include "sort_internal.h"
-#include "voice_internal.h"
+#include "core/sort_internal.h"
+#include "core/voice_internal.h"
 
 typedef struct fg_counters {
     atomic_uint_least64_t posted, dropped_posts, adopted, finished, collected;

@@ -11,10 +11,10 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "abe_voice_internal.h"
+#include "sound/abe_voice_internal.h"
 #include "fulgur/engine.h"
 #include "fg_rng.h"
-#include "wmwave_internal.h"
+#include "sound/wmwave_internal.h"
 
 /* Overlapping emissions of one voice: strokes, or repeats of a continuous
  * discharge whose sound outlasts the interval. */

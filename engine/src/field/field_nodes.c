@@ -3,7 +3,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "field_internal.h"
+#include "field/field_internal.h"
 
 size_t fg_field_node_count(const fg_field *f)
 {

@@ -11,8 +11,8 @@
 #include <string.h>
 
 #include "fg_math.h"
-#include "field_internal.h"
-#include "fp_env_internal.h"
+#include "field/field_internal.h"
+#include "core/fp_env_internal.h"
 
 #define DEFAULT_TOLERANCE 1e-5
 #define DEFAULT_CG_ITERATIONS 200

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "field_internal.h"
+#include "field/field_internal.h"
 
 static int finite3(const double *x)
 {

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "field_internal.h"
+#include "field/field_internal.h"
 
 static int size_or_default(int s)
 {

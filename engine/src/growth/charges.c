@@ -2,9 +2,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "charges_internal.h"
-#include "pick_internal.h"
-#include "tree_internal.h"
+#include "growth/charges_internal.h"
+#include "growth/pick_internal.h"
+#include "growth/tree_internal.h"
 #include "fulgur/sound.h"
 
 #define DEFAULT_CANDIDATES 8

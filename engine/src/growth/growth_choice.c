@@ -4,7 +4,7 @@
 #include <stdlib.h>
 
 #include "fg_math.h"
-#include "growth_internal.h"
+#include "growth/growth_internal.h"
 
 #define DEFAULT_GAMMA 2.5
 #define DEFAULT_CANDIDATES 8

@@ -3,8 +3,8 @@
 #include <stdlib.h>
 
 #include "fg_array.h"
-#include "field_internal.h"
-#include "growth_internal.h"
+#include "field/field_internal.h"
+#include "growth/growth_internal.h"
 
 /* Global cycles are this many CG iterations, warm. */
 #define GLOBAL_ITERATIONS 2

@@ -5,7 +5,7 @@
 
 #include "fg_array.h"
 #include "fulgur/tree.h"
-#include "tree_internal.h"
+#include "growth/tree_internal.h"
 
 struct fg_tree {
     fg_node *nodes;

@@ -4,7 +4,7 @@
 #define FULGUR_DESIGNER_INTERNAL_H
 
 #include "fulgur/lightning.h"
-#include "skeleton_internal.h"
+#include "lightning/skeleton_internal.h"
 
 /* A block's stretch on the reshaped skeleton. */
 typedef struct fg_stretch {

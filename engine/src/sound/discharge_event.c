@@ -3,9 +3,9 @@
  * shape or Abe's wave, the filter bus and the head-shadow share. */
 #include <math.h>
 
-#include "engine_internal.h"
-#include "head_shadow_internal.h"
-#include "refraction_internal.h"
+#include "core/engine_internal.h"
+#include "air/head_shadow_internal.h"
+#include "air/refraction_internal.h"
 
 static unsigned bus_of(const fg_engine *e, const fg_propagation *p, double r)
 {

@@ -4,9 +4,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "engine_internal.h"
-#include "strokes_internal.h"
-#include "turbulence_internal.h"
+#include "core/engine_internal.h"
+#include "sound/strokes_internal.h"
+#include "air/turbulence_internal.h"
 
 #define REPEAT_MIN_DEFAULT_S 0.010
 #define REPEAT_MAX_DEFAULT_S 0.050

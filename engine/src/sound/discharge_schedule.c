@@ -8,7 +8,7 @@
  * window in order once their waveform has ended for every ear. */
 #include <math.h>
 
-#include "engine_internal.h"
+#include "core/engine_internal.h"
 
 void fg_voice_adopt(fg_engine *e, fg_voice *v, double start_frame)
 {

@@ -1,7 +1,7 @@
 #include <math.h>
 
 #include "fulgur/engine.h"
-#include "strokes_internal.h"
+#include "sound/strokes_internal.h"
 
 static double logseries_weight(uint32_t k)
 {

@@ -16,7 +16,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "wmwave_internal.h"
+#include "sound/wmwave_internal.h"
 
 wm_shape wm_shape_at(const fg_sound_params *p, double t0_s, double r_m, double s, double l_m,
                      double c_m_s, double *t_s)
