@@ -53,7 +53,7 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
             size_t plane = (size_t)b * channels + ch;
-            s->bus[b].block[ch].d3 = s->d3 + plane * max_frames;
+            s->bus[b].accum[ch].d3 = s->d3 + plane * max_frames;
             s->bus[b].pre[ch] = s->pre + plane * max_frames;
             s->bus[b].quiet[ch] = FG_ABE_FIR_HISTORY;
         }
@@ -95,7 +95,7 @@ void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
     for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
         for (unsigned ch = 0; ch < s->channels; ch++) {
             fg_bus *bus = &s->bus[b];
-            wm_block_restart(&bus->block[ch], n);
+            fg_accum_restart(&bus->accum[ch], n);
             if (bus->pre_used[ch])
                 memset(bus->pre[ch], 0, s->max_frames * sizeof(float));
             bus->pre_used[ch] = false;
@@ -127,7 +127,7 @@ static bool ringing(const fg_iir *f)
  * are looked at only once they have had input. */
 static bool live(const fg_bus *bus, unsigned b, unsigned ch)
 {
-    if (bus->block[ch].touched || bus->pre_used[ch] || bus->ringing[ch])
+    if (bus->accum[ch].touched || bus->pre_used[ch] || bus->ringing[ch])
         return true;
     return is_fir(b) && bus->quiet[ch] < FG_ABE_FIR_HISTORY;
 }
@@ -138,15 +138,15 @@ void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
         for (unsigned ch = 0; ch < s->channels; ch++) {
             fg_bus *bus = &s->bus[b];
             if (b == FG_BUS_DRY && !bus->pre_used[ch]) {
-                wm_block_end(&bus->block[ch], out[ch], 1.0f);
+                fg_accum_end(&bus->accum[ch], out[ch], 1.0f);
                 continue;
             }
             if (!live(bus, b, ch))
                 continue;
-            bool input = bus->block[ch].touched || bus->pre_used[ch];
+            bool input = bus->accum[ch].touched || bus->pre_used[ch];
             float *x = bus->pre[ch];
             bus->pre_used[ch] = true; /* zero it again next block */
-            wm_block_end(&bus->block[ch], x, 1.0f);
+            fg_accum_end(&bus->accum[ch], x, 1.0f);
             bool tail = false;
             if (is_band(b)) {
                 fg_iir_process(band_filter(s, b, ch), x, n);

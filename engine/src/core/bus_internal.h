@@ -17,7 +17,7 @@
 #include "air/distance_bands_internal.h"
 #include "fulgur/propagation.h"
 #include "air/iir_internal.h"
-#include "sound/wmwave_internal.h"
+#include "core/accum_internal.h"
 
 enum {
     FG_BUS_DRY = 0,
@@ -28,7 +28,7 @@ enum {
 };
 
 typedef struct fg_bus {
-    wm_block block[2];   /* the WM-waves, per ear */
+    fg_accum accum[2];   /* difference-domain input (the WM-waves), per ear */
     float *pre[2];       /* the ear's signal before the filters */
     bool pre_used[2];    /* something was written into pre this block */
     uint32_t quiet[2];   /* frames since the FIR last had input */

@@ -36,7 +36,7 @@ typedef struct fg_event {
     unsigned serial;
     double center_s[2];   /* WM: arrival of tau = 0 */
     union {
-        wm_shape shape[2];     /* FG_MODEL_WM */
+        fg_wm_shape shape[2];     /* FG_MODEL_WM */
         fg_abe_wave abe[2];    /* FG_MODEL_ABE: arrival relative to the emission */
     };
     uint8_t bus[2];       /* the filter bus of each ear (bus_internal.h) */

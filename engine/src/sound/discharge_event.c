@@ -48,7 +48,7 @@ void fg_event_geometry(const fg_engine *e, const fg_voice *v, fg_event *ev, cons
         /* sin(theta), theta from the segment's normal: |cos| of the angle
          * to the segment's axis */
         double s = r > 0 ? fabs(d[0] * ev->dir[0] + d[1] * ev->dir[1] + d[2] * ev->dir[2]) / r : 0;
-        ev->shape[k] = wm_shape_at(p, ev->t0_s, r, s > 1.0 ? 1.0 : s, ev->half_len_m, c, NULL);
+        ev->shape[k] = fg_wm_shape_at(p, ev->t0_s, r, s > 1.0 ? 1.0 : s, ev->half_len_m, c, NULL);
         ev->shape[k].b *= gain;
     }
     ev->bus[k] = (uint8_t)bus_of(e, pr, r);

@@ -47,7 +47,7 @@ typedef struct voice_block {
 /* Adds ear ch of event ev, played by instance in, to the buses, splitting
  * it with the head-shadowed twin bus. Returns its status and its first and
  * last sample relative to the block. */
-static wm_status add_event(fg_engine *e, const fg_voice *v, const fg_event *ev,
+static fg_wave_status add_event(fg_engine *e, const fg_voice *v, const fg_event *ev,
                            const fg_instance *in, const voice_block *vb, unsigned ch, long *first,
                            long *last)
 {
@@ -67,9 +67,9 @@ static wm_status add_event(fg_engine *e, const fg_voice *v, const fg_event *ev,
         *first = (long)a;
         *last = (long)b;
         if (b < 0)
-            return WM_DONE;
+            return FG_WAVE_DONE;
         if (a >= (int64_t)n)
-            return WM_PENDING;
+            return FG_WAVE_PENDING;
         double peak = w.peak_pa;
         for (int k = 0; k < 2; k++) {
             if (share[k] == 0.0)
@@ -77,20 +77,20 @@ static wm_status add_event(fg_engine *e, const fg_voice *v, const fg_event *ev,
             w.peak_pa = peak * share[k];
             fg_abe_wave_render(&w, fs, 0, fg_bus_pre(ctx->buses, bus + k * FG_BUS_PLAIN, ch), n);
         }
-        return WM_SOUNDING;
+        return FG_WAVE_SOUNDING;
     }
-    wm_event we = {
+    fg_wm_event we = {
         .shape = ev->shape[ch],
         .center = vb->origin_frame + (in->offset_s + ev->center_s[ch]) * fs,
         .width = fs * ev->half_len_m / e->cfg.speed_of_sound_m_s,
     };
-    wm_event_span(&we, first, last);
-    wm_status status = WM_DONE;
+    fg_wm_event_span(&we, first, last);
+    fg_wave_status status = FG_WAVE_DONE;
     for (int k = 0; k < 2; k++) {
         if (share[k] == 0.0)
             continue;
         we.shape.b = ev->shape[ch].b * share[k];
-        status = wm_block_add(&ctx->buses->bus[bus + k * FG_BUS_PLAIN].block[ch], &we);
+        status = fg_wm_accum_add(&ctx->buses->bus[bus + k * FG_BUS_PLAIN].accum[ch], &we);
     }
     return status;
 }
@@ -117,7 +117,7 @@ static bool render_instance(fg_engine *e, fg_voice *v, fg_instance *in, const vo
         long lost_here = 0;
         for (unsigned ch = 0; ch < ctx->ears->count; ch++) {
             long a, b;
-            if (add_event(e, v, ev, in, vb, ch, &a, &b) != WM_DONE)
+            if (add_event(e, v, ev, in, vb, ch, &a, &b) != FG_WAVE_DONE)
                 done = false;
             long missed = k >= first_new && a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
             if (missed > lost_here)

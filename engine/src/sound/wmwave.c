@@ -18,7 +18,7 @@
 
 #include "sound/wmwave_internal.h"
 
-wm_shape wm_shape_at(const fg_sound_params *p, double t0_s, double r_m, double s, double l_m,
+fg_wm_shape fg_wm_shape_at(const fg_sound_params *p, double t0_s, double r_m, double s, double l_m,
                      double c_m_s, double *t_s)
 {
     double r = r_m > p->r0_m ? r_m : p->r0_m;
@@ -28,10 +28,10 @@ wm_shape wm_shape_at(const fg_sound_params *p, double t0_s, double r_m, double s
     double psi = c_m_s * t / l_m;
     if (t_s)
         *t_s = t;
-    return (wm_shape){.b = ps / (4.0 * psi), .s = s, .psi = psi};
+    return (fg_wm_shape){.b = ps / (4.0 * psi), .s = s, .psi = psi};
 }
 
-double wm_pressure(const wm_shape *w, double tau)
+double fg_wm_pressure(const fg_wm_shape *w, double tau)
 {
     double s = w->s, psi = w->psi, b = w->b;
     double x = fabs(tau);
@@ -45,7 +45,7 @@ double wm_pressure(const wm_shape *w, double tau)
     return 0.0;
 }
 
-double wm_integral(const wm_shape *w, double tau)
+double fg_wm_integral(const fg_wm_shape *w, double tau)
 {
     double s = w->s, psi = w->psi, b = w->b;
     double x = fabs(tau);
@@ -71,7 +71,7 @@ static long sample_at(double x)
     return m - ((double)m > y);
 }
 
-void wm_event_span(const wm_event *e, long *first, long *last)
+void fg_wm_event_span(const fg_wm_event *e, long *first, long *last)
 {
     double half = (e->shape.psi + e->shape.s) * e->width;
     *first = sample_at(e->center - half);
@@ -79,22 +79,22 @@ void wm_event_span(const wm_event *e, long *first, long *last)
 }
 
 /* P at the sample edge n - 1/2. */
-static double edge_integral(const wm_event *e, long n)
+static double edge_integral(const fg_wm_event *e, long n)
 {
-    return wm_integral(&e->shape, ((double)n - 0.5 - e->center) / e->width);
+    return fg_wm_integral(&e->shape, ((double)n - 0.5 - e->center) / e->width);
 }
 
-double wm_sample(const wm_event *e, long n)
+double fg_wm_sample(const fg_wm_event *e, long n)
 {
     /* average over one sample = (integral over the interval) / 1 sample,
      * and d(samples) = width d(tau) */
     return e->width * (edge_integral(e, n + 1) - edge_integral(e, n));
 }
 
-void wm_add_direct(const wm_event *e, double *out, size_t n)
+void fg_wm_add_direct(const fg_wm_event *e, double *out, size_t n)
 {
     long first, last;
-    wm_event_span(e, &first, &last);
+    fg_wm_event_span(e, &first, &last);
     if (first < 0)
         first = 0;
     if (last > (long)n - 1)
@@ -109,27 +109,9 @@ void wm_add_direct(const wm_event *e, double *out, size_t n)
     }
 }
 
-void wm_block_begin(wm_block *b, double *d3, size_t n)
-{
-    b->d3 = d3;
-    b->n = n;
-    b->state[0] = b->state[1] = b->state[2] = 0.0;
-    b->touched = false;
-    memset(d3, 0, n * sizeof *d3);
-}
-
-void wm_block_restart(wm_block *b, size_t n)
-{
-    if (b->touched)
-        memset(b->d3, 0, b->n * sizeof *b->d3);
-    b->n = n;
-    b->state[0] = b->state[1] = b->state[2] = 0.0;
-    b->touched = false;
-}
-
 /* Which quadratic piece of p holds tau: 0 before the wave, 1 the rising
  * shell, 2 the middle, 3 the falling shell, 4 after. */
-static int piece(const wm_shape *w, double tau)
+static int piece(const fg_wm_shape *w, double tau)
 {
     double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
     return tau <= -outer ? 0 : tau <= -inner ? 1 : tau <= inner ? 2 : tau <= outer ? 3 : 4;
@@ -142,25 +124,25 @@ static int piece(const wm_shape *w, double tau)
  * inside one piece the average of the quadratic is taken directly:
  * p(mid) + p'' h^2 / 24, h = 1/width; across a breakpoint, the P difference
  * (that sample's error is not extrapolated: the samples after it are). */
-static double sample_average(const wm_event *e, long k)
+static double sample_average(const fg_wm_event *e, long k)
 {
-    const wm_shape *w = &e->shape;
+    const fg_wm_shape *w = &e->shape;
     double a = ((double)k - 0.5 - e->center) / e->width;
     double z = ((double)k + 0.5 - e->center) / e->width;
     int pa = piece(w, a);
     if (pa != piece(w, z))
-        return e->width * (wm_integral(w, z) - wm_integral(w, a));
+        return e->width * (fg_wm_integral(w, z) - fg_wm_integral(w, a));
     if (pa == 0 || pa == 4)
         return 0.0;
     double h = z - a;
     double curvature = pa == 1 ? -2.0 * w->b / w->s : pa == 3 ? 2.0 * w->b / w->s : 0.0;
-    return wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
+    return fg_wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
 }
 
 /* Samples lo..hi (lo >= -3) evaluated exactly: state for k < 0, third
  * differences for k >= lo + 3 (earlier ones in the range lie on one
  * quadratic piece and have none). */
-static void add_range(wm_block *b, const wm_event *e, long lo, long hi)
+static void add_range(fg_accum *b, const fg_wm_event *e, long lo, long hi)
 {
     /* a merged range is at most the state (3) plus 4 breakpoints (7 each) */
     enum { MAX_RANGE = 32 };
@@ -178,7 +160,7 @@ static void add_range(wm_block *b, const wm_event *e, long lo, long hi)
  * pressure gains a0 + a1 (x' - x) + a2 (x' - x)^2 (per sample units): its
  * running integral G(u) = a0 u + a1 u^2/2 + a2 u^3/3 from x, sampled at
  * sample edges, has a fourth difference that vanishes past four samples. */
-static void add_breakpoint(wm_block *b, double x, double a0, double a1, double a2)
+static void add_breakpoint(fg_accum *b, double x, double a0, double a1, double a2)
 {
     long m = sample_at(x);
     long n = (long)b->n;
@@ -201,9 +183,9 @@ static void add_breakpoint(wm_block *b, double x, double a0, double a1, double a
  * terms, so those waves take the exact evaluation around each breakpoint. */
 #define CLOSED_FORM_MIN_SW 2.0
 
-static void add_breakpoints(wm_block *b, const wm_event *e)
+static void add_breakpoints(fg_accum *b, const fg_wm_event *e)
 {
-    const wm_shape *w = &e->shape;
+    const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, k1 = 2.0 * w->b * psi / s, k2 = 2.0 * w->b / s;
     double inner = fabs(psi - s), outer = psi + s;
     /* (tau, jump of p', jump of p'') in ascending tau */
@@ -219,23 +201,23 @@ static void add_breakpoints(wm_block *b, const wm_event *e)
                        0.5 * jumps[i][2] / (wd * wd));
 }
 
-wm_status wm_block_add(wm_block *b, const wm_event *e)
+fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
 {
-    const wm_shape *w = &e->shape;
+    const fg_wm_shape *w = &e->shape;
     long first, last;
-    wm_event_span(e, &first, &last);
+    fg_wm_event_span(e, &first, &last);
     long n = (long)b->n;
     if (last < -3)
-        return WM_DONE;
+        return FG_WAVE_DONE;
     if (first >= n)
-        return WM_PENDING;
+        return FG_WAVE_PENDING;
     b->touched = true;
 
     if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
         if (first < 0)
             add_range(b, e, -3, -1);
         add_breakpoints(b, e);
-        return WM_SOUNDING;
+        return FG_WAVE_SOUNDING;
     }
     /* Breakpoints, ascending; each disturbs the samples m-3..m+3 around the
      * sample m that holds it. */
@@ -264,23 +246,5 @@ wm_status wm_block_add(wm_block *b, const wm_event *e)
     }
     if (hi != LONG_MIN)
         add_range(b, e, lo, hi);
-    return WM_SOUNDING;
-}
-
-/* Three running sums rather than one third-order recurrence: each carries
- * only an add from sample to sample, so the loop is not latency-bound. */
-void wm_block_end(const wm_block *b, float *out, float gain)
-{
-    if (!b->touched)
-        return;
-    const double *s = b->state;
-    double d2 = s[0] - 2.0 * s[1] + s[2]; /* second difference at -1 */
-    double d1 = s[0] - s[1];              /* first difference at -1 */
-    double y = s[0];
-    for (size_t k = 0; k < b->n; k++) {
-        d2 += b->d3[k];
-        d1 += d2;
-        y += d1;
-        out[k] += gain * (float)y;
-    }
+    return FG_WAVE_SOUNDING;
 }
