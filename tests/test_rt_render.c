@@ -30,7 +30,7 @@
 #include "fulgur/fulgur.h"
 #include "random_tree.h"
 #include "rt_guard.h"
-#include "core/voice_internal.h" /* FG_MAX_INSTANCES */
+#include "sound/discharge_internal.h" /* FG_MAX_INSTANCES */
 
 #define FS 48000.0
 #define BLOCK 256

@@ -71,6 +71,13 @@ void fg_bus_set_begin(fg_bus_set *s, uint32_t n);
 /* The float buffer of bus b, ear ch, for waves rendered sample by sample. */
 float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch);
 
+/* The difference-domain accumulator of bus b, ear ch, for waves added per
+ * breakpoint. [audio-thread] */
+static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
+{
+    return &s->bus[b].accum[ch];
+}
+
 /* Filters every bus with input or a ringing tail and adds it to out.
  * [audio-thread] */
 void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n);

@@ -6,10 +6,7 @@
 #define SIXTY_DB 6.907755278982137 /* ln 1000 */
 #define MIN_DISTANCE_M 1.0
 
-fg_abe_params fg_abe_params_default(void)
-{
-    return (fg_abe_params){80.0, 20.0, 0.5, 0.12, 16, 5e-9, 1000.0, 1.0};
-}
+const fg_abe_params fg_abe_defaults = {80.0, 20.0, 0.5, 0.12, 16, 5e-9, 1000.0, 1.0};
 
 fg_result fg_abe_params_check(const fg_abe_params *p)
 {

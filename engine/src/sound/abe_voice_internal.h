@@ -50,7 +50,8 @@ typedef struct fg_abe_params {
     double ref_peak_pa;      /* peak at ref_distance_m; 1 */
 } fg_abe_params;
 
-fg_abe_params fg_abe_params_default(void);
+/* The values in the comments above: what the engine plays. */
+extern const fg_abe_params fg_abe_defaults;
 
 /* Errors: FG_ERR_NOT_FINITE for a NaN or infinite field; FG_ERR_ARGUMENT
  * for a frequency, decay time, distance or peak <= 0, a negative

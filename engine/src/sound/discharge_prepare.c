@@ -1,42 +1,13 @@
 /* Turning a posted discharge into a voice: segments, main channel, return
  * stroke timing, T0 fluctuation, geometry at the current pose, the arrival
- * sort and the strokes. Sim thread; uses only preallocated storage. */
+ * sort and the strokes. Sim thread; uses only the discharge kind's
+ * preallocated storage. */
 #include <math.h>
 #include <string.h>
 
-#include "core/engine_internal.h"
-#include "sound/strokes_internal.h"
 #include "air/turbulence_internal.h"
-
-#define REPEAT_MIN_DEFAULT_S 0.010
-#define REPEAT_MAX_DEFAULT_S 0.050
-#define REPEAT_LIMIT_S 10.0
-
-fg_result fg_discharge_check(const fg_discharge *d)
-{
-    fg_result r = fg_sound_params_check(&d->sound);
-    if (r == FG_OK)
-        r = fg_propagation_check(&d->propagation);
-    if (r != FG_OK)
-        return r;
-    if ((unsigned)d->model > FG_MODEL_ABE)
-        return FG_ERR_ARGUMENT;
-    if (!isfinite(d->emit_time_s) || !isfinite(d->repeat_min_s) || !isfinite(d->repeat_max_s) ||
-        !isfinite(d->duration_s))
-        return FG_ERR_NOT_FINITE;
-    if (d->emit_time_s < 0 && d->emit_time_s != FG_EMIT_NOW)
-        return FG_ERR_ARGUMENT;
-    if (d->strokes > FG_MAX_STROKES)
-        return FG_ERR_ARGUMENT;
-    if (!d->continuous)
-        return FG_OK;
-    double lo = d->repeat_min_s > 0 ? d->repeat_min_s : REPEAT_MIN_DEFAULT_S;
-    double hi = d->repeat_max_s > 0 ? d->repeat_max_s : REPEAT_MAX_DEFAULT_S;
-    if (d->strokes > 1 || d->repeat_min_s < 0 || d->repeat_max_s < 0 || lo > hi ||
-        hi > REPEAT_LIMIT_S || d->duration_s < 0)
-        return FG_ERR_ARGUMENT;
-    return FG_OK;
-}
+#include "sound/discharge_internal.h"
+#include "sound/strokes_internal.h"
 
 static double distance(const fg_node *a, const fg_node *b)
 {
@@ -97,14 +68,6 @@ static void sort_by_start(fg_event *events, uint32_t n, fg_prep_scratch *s)
     }
 }
 
-size_t fg_discharge_events(const fg_discharge *d)
-{
-    size_t segments = d->node_count - 1;
-    size_t stride = (segments + FG_ABE_MAX_SOURCES - 1) / FG_ABE_MAX_SOURCES;
-    size_t events = d->model == FG_MODEL_ABE ? (segments + stride - 1) / stride : segments;
-    return d->propagation.ground_reflection > 0 ? 2 * events : events;
-}
-
 /* Fills ev from segment i (node i and its parent). */
 static void segment_event(const fg_discharge *d, const fg_prep_scratch *s, size_t strike,
                           size_t i, fg_rng *rng, fg_event *ev)
@@ -144,11 +107,26 @@ static void image_event(const fg_event *src, double reflection, fg_event *ev)
     ev->gain = reflection;
 }
 
-void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
+fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void *desc,
+                               const fg_post_context *post)
 {
+    const fg_discharge *d = desc;
+    fg_discharge_voice *v = voice;
+    fg_discharge_store *store = post->storage;
+    const fg_discharge_model *model = ops->model;
+    size_t extent;
+    if (!fg_arena_alloc(&store->arena, fg_discharge_events(d, model), &extent))
+        return FG_ERR_POOL_FULL;
+    if (d->propagation.absorption == FG_ABSORPTION_ISO9613)
+        fg_bus_set_design_bands(post->buses);
+    v->model = model;
+    v->extent = extent;
+    v->events = &store->events[extent];
+    v->main_index = &store->main_index[extent];
+
     const fg_node *nodes = d->nodes;
     size_t n = d->node_count;
-    fg_prep_scratch *s = &e->scratch;
+    fg_prep_scratch *s = &store->scratch;
     fg_rng rng;
     fg_rng_seed(&rng, d->seed);
 
@@ -157,15 +135,12 @@ void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
         s->path_m[i] = s->path_m[nodes[i].parent] + distance(&nodes[i], &nodes[nodes[i].parent]);
     size_t strike = mark_main_channel(nodes, n, s);
 
-    fg_listener pose;
-    unsigned serial;
-    fg_listener_cell_read(&e->listener, &pose, &serial);
+    const fg_engine_config *cfg = post->cfg;
     fg_ears ears;
-    fg_listener_ears(&pose, e->cfg.channels, e->cfg.ear_spacing_m, &ears);
-    memcpy(v->post_position, pose.position, sizeof v->post_position);
+    fg_listener_ears(post->pose, cfg->channels, cfg->ear_spacing_m, &ears);
+    memcpy(v->post_position, post->pose->position, sizeof v->post_position);
     v->sound = d->sound;
     v->propagation = d->propagation;
-    v->model = d->model;
 
     const fg_propagation *pr = &d->propagation;
     fg_turbulence turbulence = {
@@ -174,9 +149,8 @@ void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
         .correlation_m = pr->turbulence_length_m > 0 ? pr->turbulence_length_m
                                                      : FG_TURBULENCE_DEFAULT_LENGTH_M,
     };
-    /* Abe's model places one source per stride segments */
-    size_t stride = d->model == FG_MODEL_ABE ? (n - 1 + FG_ABE_MAX_SOURCES - 1) / FG_ABE_MAX_SOURCES
-                                             : 1;
+    /* one source point per stride segments */
+    size_t stride = model->stride(n - 1);
     uint32_t m = 0;
     for (size_t i = 1; i < n; i += stride) {
         fg_event *ev = &v->events[m++];
@@ -189,11 +163,11 @@ void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
     v->event_count = m;
     for (uint32_t k = 0; k < m; k++) {
         fg_event *ev = &v->events[k];
-        ev->serial = serial;
+        ev->serial = post->pose_serial;
         ev->start_s = INFINITY;
         for (unsigned j = 0; j < ears.count; j++) {
-            fg_event_geometry(e, v, ev, &ears, (int)j);
-            ev->start_s = fmin(ev->start_s, fg_event_start_s(e, v, ev, (int)j));
+            fg_event_geometry(v, ev, &ears, (int)j, cfg->speed_of_sound_m_s, post->buses);
+            ev->start_s = fmin(ev->start_s, model->start_s(ev, (int)j, cfg->speed_of_sound_m_s));
         }
     }
     sort_by_start(v->events, v->event_count, s);
@@ -204,10 +178,9 @@ void fg_prepare_voice(fg_engine *e, fg_voice *v, const fg_discharge *d)
 
     v->continuous = d->continuous != 0;
     v->strokes = fg_discharge_stroke_offsets(d, v->stroke_offset_s, FG_MAX_STROKES);
-    v->repeat_min_s = d->repeat_min_s > 0 ? d->repeat_min_s : REPEAT_MIN_DEFAULT_S;
-    v->repeat_max_s = d->repeat_max_s > 0 ? d->repeat_max_s : REPEAT_MAX_DEFAULT_S;
+    fg_discharge_repeat_range(d, &v->repeat_min_s, &v->repeat_max_s);
     v->duration_s = d->duration_s;
     fg_rng_seed(&v->rng, fg_rng_next(&rng));
     v->emit_time_s = d->emit_time_s;
-    atomic_store_explicit(&v->stop, false, memory_order_relaxed);
+    return FG_OK;
 }
