@@ -152,34 +152,6 @@ static void test_attenuation_f_squared(void **state)
     }
 }
 
-static void test_params_check(void **state)
-{
-    (void)state;
-    fg_abe_params good = fg_abe_defaults;
-    assert_int_equal(fg_abe_params_check(&good), FG_OK);
-    fg_abe_params p = good;
-    p.harmonics = 0;
-    assert_int_equal(fg_abe_params_check(&p), FG_ERR_ARGUMENT);
-    p = good;
-    p.harmonics = FG_ABE_MAX_HARMONICS + 1;
-    assert_int_equal(fg_abe_params_check(&p), FG_ERR_ARGUMENT);
-    p = good;
-    p.amp_decay_s = 0.0;
-    assert_int_equal(fg_abe_params_check(&p), FG_ERR_ARGUMENT);
-    p = good;
-    p.atten_db_m_hz2 = -1e-9;
-    assert_int_equal(fg_abe_params_check(&p), FG_ERR_ARGUMENT);
-    p = good;
-    p.ground_temp_c = -600.0;
-    assert_int_equal(fg_abe_params_check(&p), FG_ERR_ARGUMENT);
-    p = good;
-    p.f_ground_hz = NAN;
-    assert_int_equal(fg_abe_params_check(&p), FG_ERR_NOT_FINITE);
-    p = good;
-    p.ref_distance_m = INFINITY;
-    assert_int_equal(fg_abe_params_check(&p), FG_ERR_NOT_FINITE);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -188,7 +160,6 @@ int main(void)
         cmocka_unit_test(test_height_law),
         cmocka_unit_test(test_inverse_square_energy),
         cmocka_unit_test(test_attenuation_f_squared),
-        cmocka_unit_test(test_params_check),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

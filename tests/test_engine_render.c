@@ -14,6 +14,7 @@
 
 #include "fulgur/fulgur.h"
 #include "sound/wmwave_internal.h"
+#include "wm_reference.h"
 
 #define FS 48000.0
 #define C 343.0
@@ -78,7 +79,7 @@ static void add_segment(const scene *s, int i, const double e[3], double first, 
     double emit = s->emit_s + 0.5 * (to_strike(s, i) + to_strike(s, s->nodes[i].parent)) /
                                   s->sound.return_stroke_speed_m_s;
     fg_wm_event ev = {w, (emit + r / C) * FS - first, FS * (len / 2) / C};
-    fg_wm_add_direct(&ev, out, n);
+    ref_wm_add_direct(&ev, out, n);
 }
 
 static void ears_of(const fg_listener *p, double ears[2][3])

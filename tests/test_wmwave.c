@@ -14,6 +14,7 @@
 
 #include "fg_rng.h"
 #include "sound/wmwave_internal.h"
+#include "wm_reference.h"
 
 #define PI 3.14159265358979323846
 #define C_M_S 343.0
@@ -239,7 +240,7 @@ static void test_zero_dc(void **state)
             fg_wm_event e = {.shape = shape_of(1.0, shape_cases[ci].s, shape_cases[ci].psi),
                           .center = N / 2 + 0.5 + 1e-5, .width = widths[wi]};
             memset(y, 0, sizeof y);
-            fg_wm_add_direct(&e, y, N);
+            ref_wm_add_direct(&e, y, N);
             double sum = 0, energy = 0;
             for (int n = 0; n < N; n++) {
                 sum += y[n];
@@ -304,7 +305,7 @@ static void test_short_spark_energy(void **state)
         for (int k = 0; k < K; k++) {
             double y[N] = {0};
             fg_wm_event e = {.shape = w, .center = N / 2 + (k + 0.5) / K, .width = width};
-            fg_wm_add_direct(&e, y, N);
+            ref_wm_add_direct(&e, y, N);
             double eb = 0, ep = 0;
             for (int n = 0; n < N; n++) {
                 double p = fg_wm_pressure(&w, (n - e.center) / width);
@@ -404,12 +405,12 @@ static void test_chain_is_one_segment(void **state)
             fg_wm_event e = {.shape = shape_of(ps, cc->s, C_M_S * cc->t_half / cc->l),
                           .center = center + FS_HZ * x * cc->s / C_M_S,
                           .width = FS_HZ * cc->l / C_M_S};
-            fg_wm_add_direct(&e, chain, N);
+            ref_wm_add_direct(&e, chain, N);
         }
         double big_l = cc->n * cc->l;
         fg_wm_event one = {.shape = shape_of(ps, cc->s, C_M_S * cc->t_half / big_l),
                         .center = center, .width = FS_HZ * big_l / C_M_S};
-        fg_wm_add_direct(&one, longseg, N);
+        ref_wm_add_direct(&one, longseg, N);
         double peak = 0, worst = 0;
         for (int k = 0; k < N; k++) {
             peak = fmax(peak, fabs(chain[k]));
@@ -499,7 +500,7 @@ static double run_blocks(const block_case *bc, uint64_t seed)
     /* centres from before the first block to after the last */
     for (int i = 0; i < bc->events; i++) {
         ev[i] = random_event(&rng, -300.0, (double)total + 300.0);
-        fg_wm_add_direct(&ev[i], ref, total);
+        ref_wm_add_direct(&ev[i], ref, total);
     }
     double peak = 0;
     for (size_t k = 0; k < total; k++)
@@ -570,7 +571,7 @@ static void test_block_no_drift(void **state)
     for (int i = 0; i < EVENTS; i++) {
         ev[i] = random_event(&rng, 0.0, (double)total);
         ev[i].width = fmin(ev[i].width, 50.0);
-        fg_wm_add_direct(&ev[i], ref, total);
+        ref_wm_add_direct(&ev[i], ref, total);
     }
     double peak = 0;
     for (size_t k = 0; k < total; k++)
@@ -632,8 +633,8 @@ static void test_tiny_s(void **state)
             double y[64] = {0}, y0[64] = {0};
             fg_wm_event e = {.shape = w, .center = 31.7, .width = 7.0 / psi};
             fg_wm_event e0 = {.shape = n_wave, .center = 31.7, .width = 7.0 / psi};
-            fg_wm_add_direct(&e, y, 64);
-            fg_wm_add_direct(&e0, y0, 64);
+            ref_wm_add_direct(&e, y, 64);
+            ref_wm_add_direct(&e0, y0, 64);
             for (int n = 0; n < 64; n++)
                 CHECK(isfinite(y[n]) && fabs(y[n] - y0[n]) <= 1e-9,
                       "s=%g psi=%g: sample %d = %.12g vs %.12g", tiny[si], psi, n, y[n], y0[n]);

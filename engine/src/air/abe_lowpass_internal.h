@@ -56,10 +56,4 @@ void fg_abe_fir_reset(fg_abe_fir *f);
  * [audio-thread]: bounded, no allocation. */
 void fg_abe_fir_process(fg_abe_fir *f, float *buf, size_t n);
 
-/* |H| in decibels at f_hz for the rate the filter was designed for. */
-double fg_abe_fir_db(const fg_abe_fir *f, double f_hz, double fs_hz);
-
-/* The group delay, samples (exact: the filter is linear phase). */
-double fg_abe_fir_delay_frames(const fg_abe_fir *f);
-
 #endif

@@ -3,18 +3,18 @@
  * for thunder's low frequencies over open ground). The reflected sound is
  * that of the image source below the ground.
  *
- * Mirroring the ear instead of the source gives the same distance, the
- * same angle to every segment and so the same WM-wave: the image of a
- * segment as heard by an ear equals the segment itself as heard by the
- * mirrored ear, scaled by Q. The path is longer by the extra length below. */
+ * The engine mirrors each source segment: the image's midpoint and
+ * direction are the segment's mirrored in z = 0, its gain is Q, and it
+ * emits when the segment does (sound/discharge_prepare.c); from there on
+ * it is an event like any other, with its own distance, angle, arrival and
+ * bus for every ear. Its path is longer than the direct one by
+ * sqrt(D^2 + (hs + hl)^2) - sqrt(D^2 + (hs - hl)^2) for a source at height
+ * hs, an ear at hl and a horizontal distance D (test_propagation checks
+ * the engine's delays against this). */
 #ifndef FULGUR_GROUND_INTERNAL_H
 #define FULGUR_GROUND_INTERNAL_H
 
 /* out = p mirrored in z = 0 (out may alias p). */
 void fg_ground_mirror(const double p[3], double out[3]);
-
-/* How much longer the reflected path from src to ear is than the direct
- * one, metres (>= 0 for points above the ground). */
-double fg_ground_extra_path_m(const double src[3], const double ear[3]);
 
 #endif

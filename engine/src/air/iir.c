@@ -57,13 +57,3 @@ double fg_iir_db(const fg_iir *f, double w)
         m2 *= biquad_mag2(&f->sec[k], &e);
     return 10.0 * log10(m2);
 }
-
-double fg_quadratic_root_radius(double c1, double c2)
-{
-    double disc = c1 * c1 - 4.0 * c2;
-    if (disc < 0.0)
-        return sqrt(c2); /* complex pair: |x|^2 = c2 */
-    double r = sqrt(disc);
-    double a = fabs(-c1 + r) / 2.0, b = fabs(-c1 - r) / 2.0;
-    return a > b ? a : b;
-}

@@ -40,9 +40,4 @@ fg_phasor fg_phasor_at(double w);
 /* |H(e^{jw})| of the cascade in decibels, w = 2 pi f / fs rad/sample. */
 double fg_iir_db(const fg_iir *f, double w);
 
-/* The roots of 1 + c1 x^-1 + c2 x^-2 (poles with a1, a2; zeros, scaled by
- * b0, with b1, b2): the larger modulus of the pair. A first-order section
- * has one root, -c1. */
-double fg_quadratic_root_radius(double c1, double c2);
-
 #endif

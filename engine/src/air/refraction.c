@@ -8,7 +8,8 @@ static int straight(double radius_m)
     return radius_m <= 0.0 || isinf(radius_m);
 }
 
-double fg_refraction_path_m(double chord_m, double radius_m)
+/* Arc length for a chord chord_m; radius_m 0 or infinite: the chord. */
+static double path_m(double chord_m, double radius_m)
 {
     if (straight(radius_m))
         return chord_m;
@@ -21,7 +22,7 @@ double fg_refraction_travel_s(const double src[3], const double ear[3], double r
                               double c_m_s)
 {
     double dx = src[0] - ear[0], dy = src[1] - ear[1], dz = src[2] - ear[2];
-    return fg_refraction_path_m(sqrt(dx * dx + dy * dy + dz * dz), radius_m) / c_m_s;
+    return path_m(sqrt(dx * dx + dy * dy + dz * dz), radius_m) / c_m_s;
 }
 
 double fg_shadow_height_m(double horizontal_m, double radius_m)

@@ -19,9 +19,6 @@
 #define FULGUR_REFRACTION_INTERNAL_H
 
 
-/* Arc length for a chord chord_m; radius_m 0 or infinite: the chord. */
-double fg_refraction_path_m(double chord_m, double radius_m);
-
 /* Travel time from src to ear along the arc, seconds, at speed c_m_s. */
 double fg_refraction_travel_s(const double src[3], const double ear[3], double radius_m,
                               double c_m_s);

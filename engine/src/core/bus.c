@@ -53,7 +53,7 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
             size_t plane = (size_t)b * channels + ch;
-            s->bus[b].accum[ch].d3 = s->d3 + plane * max_frames;
+            fg_accum_begin(&s->bus[b].accum[ch], s->d3 + plane * max_frames, max_frames);
             s->bus[b].pre[ch] = s->pre + plane * max_frames;
             s->bus[b].quiet[ch] = FG_ABE_FIR_HISTORY;
         }

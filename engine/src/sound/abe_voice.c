@@ -8,21 +8,6 @@
 
 const fg_abe_params fg_abe_defaults = {80.0, 20.0, 0.5, 0.12, 16, 5e-9, 1000.0, 1.0};
 
-fg_result fg_abe_params_check(const fg_abe_params *p)
-{
-    const double v[] = {p->f_ground_hz,    p->ground_temp_c,  p->freq_decay_s, p->amp_decay_s,
-                        p->atten_db_m_hz2, p->ref_distance_m, p->ref_peak_pa};
-    for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
-        if (!isfinite(v[i]))
-            return FG_ERR_NOT_FINITE;
-    if (p->f_ground_hz <= 0.0 || p->freq_decay_s <= 0.0 || p->amp_decay_s <= 0.0 ||
-        p->ref_distance_m <= 0.0 || p->ref_peak_pa <= 0.0 || p->atten_db_m_hz2 < 0.0 ||
-        p->harmonics < 1 || p->harmonics > FG_ABE_MAX_HARMONICS ||
-        331.5 + 0.6 * p->ground_temp_c <= 0.0)
-        return FG_ERR_ARGUMENT;
-    return FG_OK;
-}
-
 static double speed_at(double temp_c)
 {
     return 331.5 + 0.6 * temp_c;

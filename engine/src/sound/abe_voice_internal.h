@@ -40,24 +40,18 @@
 #define FG_ABE_LAPSE_K_PER_M 0.0065
 
 typedef struct fg_abe_params {
-    double f_ground_hz;      /* fundamental of a source at the ear's height; 80 */
-    double ground_temp_c;    /* air temperature at the ear; 20 */
-    double freq_decay_s;     /* 0.5 */
-    double amp_decay_s;      /* 0.12: the wave lasts 0.83 s */
+    double f_ground_hz;      /* > 0: fundamental of a source at the ear's height; 80 */
+    double ground_temp_c;    /* > -552.5 (c > 0): air temperature at the ear; 20 */
+    double freq_decay_s;     /* > 0; 0.5 */
+    double amp_decay_s;      /* > 0; 0.12: the wave lasts 0.83 s */
     unsigned harmonics;      /* N, 1..FG_ABE_MAX_HARMONICS; 16 */
     double atten_db_m_hz2;   /* >= 0; 5e-9 */
-    double ref_distance_m;   /* 1000 */
-    double ref_peak_pa;      /* peak at ref_distance_m; 1 */
+    double ref_distance_m;   /* > 0; 1000 */
+    double ref_peak_pa;      /* > 0: peak at ref_distance_m; 1 */
 } fg_abe_params;
 
 /* The values in the comments above: what the engine plays. */
 extern const fg_abe_params fg_abe_defaults;
-
-/* Errors: FG_ERR_NOT_FINITE for a NaN or infinite field; FG_ERR_ARGUMENT
- * for a frequency, decay time, distance or peak <= 0, a negative
- * attenuation, harmonics out of range, or a temperature at or below
- * -552.5 C (where c would vanish). */
-fg_result fg_abe_params_check(const fg_abe_params *p);
 
 /* The fundamental of a source height_m above the ear, Hz. */
 double fg_abe_fundamental_hz(const fg_abe_params *p, double height_m);
@@ -75,7 +69,8 @@ typedef struct fg_abe_wave {
 } fg_abe_wave;
 
 /* Prepares w for a source at src and an ear at ear (metres, z up), emitted
- * at emit_s, travelling at c_m_s. p must pass fg_abe_params_check. */
+ * at emit_s, travelling at c_m_s. p holds the ranges in the comments of
+ * fg_abe_params (the tests vary fg_abe_defaults within them). */
 void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_params *p, const double src[3],
                       const double ear[3], double emit_s, double c_m_s);
 

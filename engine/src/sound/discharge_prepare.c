@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "air/ground_internal.h"
 #include "air/turbulence_internal.h"
 #include "sound/discharge_internal.h"
 #include "sound/strokes_internal.h"
@@ -102,8 +103,8 @@ static void segment_event(const fg_discharge *d, const fg_prep_scratch *s, size_
 static void image_event(const fg_event *src, double reflection, fg_event *ev)
 {
     *ev = *src;
-    ev->mid[2] = -src->mid[2];
-    ev->dir[2] = -src->dir[2];
+    fg_ground_mirror(src->mid, ev->mid);
+    fg_ground_mirror(src->dir, ev->dir);
     ev->gain = reflection;
 }
 

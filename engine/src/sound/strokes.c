@@ -29,29 +29,9 @@ static uint32_t draw(fg_rng *rng, double (*weight)(uint32_t), uint32_t kmin, uin
     return kmax;
 }
 
-static double pmf(double (*weight)(uint32_t), uint32_t k, uint32_t kmin, uint32_t kmax)
-{
-    if (k < kmin || k > kmax)
-        return 0;
-    double total = 0;
-    for (uint32_t j = kmin; j <= kmax; j++)
-        total += weight(j);
-    return weight(k) / total;
-}
-
-double fg_strokes_count_pmf(uint32_t k)
-{
-    return pmf(logseries_weight, k, 1, FG_MAX_STROKES);
-}
-
 uint32_t fg_strokes_draw_count(fg_rng *rng)
 {
     return draw(rng, logseries_weight, 1, FG_MAX_STROKES);
-}
-
-double fg_strokes_interval_pmf(uint32_t k)
-{
-    return pmf(poisson_weight, k, 0, FG_STROKE_INTERVAL_MAX_K);
 }
 
 double fg_strokes_draw_interval_s(fg_rng *rng)

@@ -18,12 +18,10 @@
 #define FG_STROKE_INTERVAL_POISSON_MEAN 2.5
 #define FG_STROKE_INTERVAL_MAX_K 22 /* 10 ms * (1 + 22 + 1) = 240 ms */
 
-/* Probability of k strokes (1..FG_MAX_STROKES) under the cut law. */
-double fg_strokes_count_pmf(uint32_t k);
+/* A stroke count (1..FG_MAX_STROKES) drawn from the cut law. */
 uint32_t fg_strokes_draw_count(fg_rng *rng);
 
-/* Probability that an interval lies in [10 ms (1 + k), 10 ms (2 + k)). */
-double fg_strokes_interval_pmf(uint32_t k);
+/* An interval between strokes, seconds, drawn from its law. */
 double fg_strokes_draw_interval_s(fg_rng *rng);
 
 #endif

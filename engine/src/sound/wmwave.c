@@ -78,37 +78,6 @@ void fg_wm_event_span(const fg_wm_event *e, long *first, long *last)
     *last = sample_at(e->center + half);
 }
 
-/* P at the sample edge n - 1/2. */
-static double edge_integral(const fg_wm_event *e, long n)
-{
-    return fg_wm_integral(&e->shape, ((double)n - 0.5 - e->center) / e->width);
-}
-
-double fg_wm_sample(const fg_wm_event *e, long n)
-{
-    /* average over one sample = (integral over the interval) / 1 sample,
-     * and d(samples) = width d(tau) */
-    return e->width * (edge_integral(e, n + 1) - edge_integral(e, n));
-}
-
-void fg_wm_add_direct(const fg_wm_event *e, double *out, size_t n)
-{
-    long first, last;
-    fg_wm_event_span(e, &first, &last);
-    if (first < 0)
-        first = 0;
-    if (last > (long)n - 1)
-        last = (long)n - 1;
-    if (first > last)
-        return;
-    double lo = edge_integral(e, first);
-    for (long k = first; k <= last; k++) {
-        double hi = edge_integral(e, k + 1);
-        out[k] += e->width * (hi - lo);
-        lo = hi;
-    }
-}
-
 /* Which quadratic piece of p holds tau: 0 before the wave, 1 the rising
  * shell, 2 the middle, 3 the falling shell, 4 after. */
 static int piece(const fg_wm_shape *w, double tau)

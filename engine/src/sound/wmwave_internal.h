@@ -41,11 +41,6 @@ double fg_wm_integral(const fg_wm_shape *w, double tau);
 /* First and last sample the event touches. */
 void fg_wm_event_span(const fg_wm_event *e, long *first, long *last);
 
-/* The exact average of the pressure over sample n's interval. */
-double fg_wm_sample(const fg_wm_event *e, long n);
-
-/* Adds the sample averages of samples [0, n) into out: the reference. */
-void fg_wm_add_direct(const fg_wm_event *e, double *out, size_t n);
 
 /* Adds event e (positions relative to the block start) to the block's
  * accumulator. The cost is a few closed-form evaluations per breakpoint in
