@@ -303,8 +303,8 @@ static int generate_preset(fg_preset preset, const cJSON *spec, const char *path
     int size = FG_FIELD_DEFAULT_SIZE, dbm = 0, solver = SOLVER_CPU;
     if (integer(&c, spec, "size", "size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size))
         return -1;
-    fg_discharge_setup s;
-    if (fg_discharge_preset(preset, size, &s) != FG_OK)
+    fg_field_scene s;
+    if (fg_field_scene_preset(preset, size, &s) != FG_OK)
         return fail(&c, "size", "must be %d..%d", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE);
     s.growth.seed = gc->seed;
     if (parse_growth(&c, spec, &s.growth, &dbm) || parse_solver(&c, spec, dbm, &solver))

@@ -1,5 +1,5 @@
 /* Scene generators "lightning" and "charges": JSON to the engine's
- * fg_lightning_params / fg_charges_params, every error naming its path. */
+ * fg_lightning_config / fg_charges_config, every error naming its path. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -62,7 +62,7 @@ static int parse_skeleton(const cJSON *item, const char *path, double **out, siz
     return 0;
 }
 
-static int parse_block(const cJSON *item, const char *path, fg_thunder_block *b, char *err,
+static int parse_feature(const cJSON *item, const char *path, fg_thunder_feature *b, char *err,
                        size_t err_size)
 {
     static const char *const keys[] = {"feature", "start", "end", "amplitude", NULL};
@@ -72,11 +72,11 @@ static int parse_block(const cJSON *item, const char *path, fg_thunder_block *b,
     char key[JSON_PATH_MAX];
     json_path_key(key, sizeof key, path, "feature");
     const cJSON *f = cJSON_GetObjectItemCaseSensitive(item, "feature");
-    b->feature = 0;
+    b->kind = 0;
     for (int i = 0; i < 3 && cJSON_IsString(f); i++)
         if (strcmp(f->valuestring, names[i]) == 0)
-            b->feature = (fg_thunder_feature)(FG_THUNDER_CLAP + i);
-    if (!b->feature)
+            b->kind = (fg_thunder_kind)(FG_THUNDER_CLAP + i);
+    if (!b->kind)
         return json_fail(err, err_size, key, "required: \"clap\", \"rumble\" or \"roar\"");
     b->start = NAN, b->end = NAN, b->amplitude = 1;
     if (json_number(item, path, "start", fraction, &b->start, err, err_size) ||
@@ -88,28 +88,28 @@ static int parse_block(const cJSON *item, const char *path, fg_thunder_block *b,
         return json_fail(err, err_size, path, "\"start\" and \"end\" are required");
     if (b->start >= b->end)
         return json_fail(err, err_size, path, "start %g is not before end %g", b->start, b->end);
-    if (b->feature != FG_THUNDER_ROAR && b->end == 1)
+    if (b->kind != FG_THUNDER_ROAR && b->end == 1)
         return json_fail(err, err_size, path,
                          "a %s must end before 1: the channel needs a stretch to reach the ground",
-                         names[b->feature - 1]);
+                         names[b->kind - 1]);
     return 0;
 }
 
-static int parse_design(const cJSON *item, const char *path, fg_thunder_block *blocks,
+static int parse_design(const cJSON *item, const char *path, fg_thunder_feature *features,
                         size_t *count, char *err, size_t err_size)
 {
     int n = cJSON_GetArraySize(item);
-    if (!cJSON_IsArray(item) || n > FG_THUNDER_MAX_BLOCKS)
-        return json_fail(err, err_size, path, "expected an array of at most %d blocks",
-                         FG_THUNDER_MAX_BLOCKS);
+    if (!cJSON_IsArray(item) || n > FG_THUNDER_MAX_FEATURES)
+        return json_fail(err, err_size, path, "expected an array of at most %d features",
+                         FG_THUNDER_MAX_FEATURES);
     char at[JSON_PATH_MAX];
     size_t i = 0;
     for (const cJSON *c = item->child; c; c = c->next, i++) {
         json_path_index(at, sizeof at, path, i);
-        if (parse_block(c, at, &blocks[i], err, err_size))
+        if (parse_feature(c, at, &features[i], err, err_size))
             return -1;
         for (size_t j = 0; j < i; j++)
-            if (blocks[i].start < blocks[j].end && blocks[j].start < blocks[i].end)
+            if (features[i].start < features[j].end && features[j].start < features[i].end)
                 return json_fail(err, err_size, at, "overlaps %s[%zu]", path, j);
     }
     *count = i;
@@ -155,7 +155,7 @@ int gen_lightning(const cJSON *spec, const char *path, const gen_context *ctx, f
         "max_nodes", NULL};
     if (json_check_keys(spec, path, keys, err, err_size))
         return -1;
-    fg_lightning_params p = {.seed = ctx->seed};
+    fg_lightning_config p = {.seed = ctx->seed};
     memcpy(p.listener_m, ctx->listener_m, sizeof p.listener_m);
     double branch_p = -2;
     int placed;
@@ -181,12 +181,12 @@ int gen_lightning(const cJSON *spec, const char *path, const gen_context *ctx, f
         return json_fail(err, err_size, key, "give \"strike\" or \"distance\", not both");
     }
     char key[JSON_PATH_MAX];
-    fg_thunder_block blocks[FG_THUNDER_MAX_BLOCKS];
+    fg_thunder_feature features[FG_THUNDER_MAX_FEATURES];
     const cJSON *design = cJSON_GetObjectItemCaseSensitive(spec, "design");
     json_path_key(key, sizeof key, path, "design");
-    if (design && parse_design(design, key, blocks, &p.block_count, err, err_size))
+    if (design && parse_design(design, key, features, &p.feature_count, err, err_size))
         return -1;
-    p.blocks = blocks;
+    p.features = features;
     double *skeleton = NULL;
     const cJSON *sk = cJSON_GetObjectItemCaseSensitive(spec, "skeleton");
     json_path_key(key, sizeof key, path, "skeleton");
@@ -236,7 +236,7 @@ static int parse_charges(const cJSON *item, const char *path, fg_point_charge **
     return 0;
 }
 
-static int parse_target(const cJSON *item, const char *path, fg_charges_params *p, char *err,
+static int parse_target(const cJSON *item, const char *path, fg_charges_config *p, char *err,
                         size_t err_size)
 {
     static const char *const keys[] = {"position", "radius", NULL};
@@ -252,7 +252,7 @@ static int parse_target(const cJSON *item, const char *path, fg_charges_params *
 
 /* Runs the growth, naming the field at fault when the engine refuses the
  * combination of values (the JSON ranges have checked each alone). */
-static int grow_charges(const fg_charges_params *p, const char *path, fg_tree *out, char *err,
+static int grow_charges(const fg_charges_config *p, const char *path, fg_tree *out, char *err,
                         size_t err_size)
 {
     char key[JSON_PATH_MAX];
@@ -263,10 +263,10 @@ static int grow_charges(const fg_charges_params *p, const char *path, fg_tree *o
         return json_fail(err, err_size, key, "must be above the ground (z > 0)");
     if (p->target_radius_m > 0 && sqrt(dx * dx + dy * dy + dz * dz) <= p->target_radius_m)
         return json_fail(err, err_size, key, "lies inside the target");
-    fg_charges_params used, one = *p;
+    fg_charges_config used, one = *p;
     one.chosen = 1;
-    if (fg_charges_params_resolve(p, &used) != FG_OK) {
-        int chosen_at_fault = fg_charges_params_resolve(&one, &used) == FG_OK;
+    if (fg_charges_config_resolve(p, &used) != FG_OK) {
+        int chosen_at_fault = fg_charges_config_resolve(&one, &used) == FG_OK;
         json_path_key(key, sizeof key, path, chosen_at_fault ? "chosen" : "exclusion");
         return json_fail(err, err_size, key, "%s",
                          chosen_at_fault ? "more than the candidates (default 8)"
@@ -288,7 +288,7 @@ int gen_charges(const cJSON *spec, const char *path, const gen_context *ctx, fg_
                                        "target",   "max_nodes", NULL};
     if (json_check_keys(spec, path, keys, err, err_size))
         return -1;
-    fg_charges_params p = {.seed = ctx->seed, .start_m = {NAN, NAN, NAN}};
+    fg_charges_config p = {.seed = ctx->seed, .start_m = {NAN, NAN, NAN}};
     char key[JSON_PATH_MAX];
     const cJSON *target = cJSON_GetObjectItemCaseSensitive(spec, "target");
     json_path_key(key, sizeof key, path, "target");

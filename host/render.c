@@ -135,8 +135,8 @@ static int run(render_job *job, uint64_t *frames_out, char *err, size_t err_size
             return -1;
         fg_engine_collect(job->engine);
         frame += n;
-        fg_engine_stats stats;
-        fg_engine_get_stats(job->engine, &stats);
+        fg_engine_report stats;
+        fg_engine_get_report(job->engine, &stats);
         if (s->duration_s == 0 && job->next == s->discharge_count &&
             stats.finished == s->discharge_count)
             break;
@@ -187,8 +187,8 @@ static int render_file(const scene *s, const char *out_path)
         ok = temp_file_commit(&out, err, sizeof err) == 0;
     else
         temp_file_abort(&out);
-    fg_engine_stats stats;
-    fg_engine_get_stats(job.engine, &stats);
+    fg_engine_report stats;
+    fg_engine_get_report(job.engine, &stats);
     release(&job);
     if (!ok) {
         fprintf(stderr, "fulgur: %s\n", err);

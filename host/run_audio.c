@@ -14,8 +14,8 @@
  * the k-th posted. */
 static void note_adoptions(run_ctx *run, uint64_t frames, uint64_t t_ns)
 {
-    fg_engine_stats stats;
-    fg_engine_get_stats(run->engine, &stats);
+    fg_engine_report stats;
+    fg_engine_get_report(run->engine, &stats);
     for (; run->adopted < stats.adopted; run->adopted++) {
         if (run->adopted >= run->s->discharge_count)
             continue; /* cannot happen: one post per discharge */
@@ -28,8 +28,8 @@ static bool all_sounded(run_ctx *run)
 {
     if (!atomic_load(&run->sim_done))
         return false;
-    fg_engine_stats stats;
-    fg_engine_get_stats(run->engine, &stats);
+    fg_engine_report stats;
+    fg_engine_get_report(run->engine, &stats);
     return stats.finished == stats.posted;
 }
 

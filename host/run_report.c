@@ -116,8 +116,8 @@ char *run_report_json(const run_ctx *run, double wall_s)
     cJSON *root = cJSON_CreateObject();
     if (!root)
         return NULL;
-    fg_engine_stats st;
-    fg_engine_get_stats(run->engine, &st);
+    fg_engine_report st;
+    fg_engine_get_report(run->engine, &st);
     cJSON_AddStringToObject(root, "scene", run->opt.scene_path);
     cJSON_AddStringToObject(root, "audio", audio_names[run->opt.audio]);
     cJSON_AddBoolToObject(root, "paced", run->paced);

@@ -37,7 +37,7 @@ static int parse_preset(const cJSON *obj, const char *base, scene_discharge *d, 
 }
 
 /* The overrides of the preset's sound parameters, each in its unit. */
-static int parse_sound(const cJSON *obj, const char *base, fg_sound_params *p, char *err,
+static int parse_sound(const cJSON *obj, const char *base, fg_sound_config *p, char *err,
                        size_t err_size)
 {
     return json_number(obj, base, "T0", (json_range){0, 0.1, .lo_open = true}, &p->t0_s, err,

@@ -19,7 +19,7 @@ int scene_parse_discharge(const cJSON *item, const char *path, size_t index, con
 
 /* "propagation" at path (an object) over *p, which holds the defaults:
  * the keys present replace their effect's settings. */
-int scene_parse_propagation(const cJSON *item, const char *path, fg_propagation *p, char *err,
+int scene_parse_propagation(const cJSON *item, const char *path, fg_propagation_config *p, char *err,
                             size_t err_size);
 
 /* "tree" at path: reads the nodes, adds offset_m and checks the tree into

@@ -29,7 +29,7 @@ static int switch_or_object(const cJSON *item, const char *path, const char *con
     return json_check_keys(item, path, keys, err, err_size);
 }
 
-static int parse_refraction(const cJSON *obj, const char *base, fg_propagation *p, char *err,
+static int parse_refraction(const cJSON *obj, const char *base, fg_propagation_config *p, char *err,
                             size_t err_size)
 {
     static const char *const keys[] = {"radius", NULL};
@@ -47,7 +47,7 @@ static int parse_refraction(const cJSON *obj, const char *base, fg_propagation *
                : 0;
 }
 
-static int parse_turbulence(const cJSON *obj, const char *base, fg_propagation *p, char *err,
+static int parse_turbulence(const cJSON *obj, const char *base, fg_propagation_config *p, char *err,
                             size_t err_size)
 {
     static const char *const keys[] = {"amplitude", "length", NULL};
@@ -82,7 +82,7 @@ static int absorption_name(const cJSON *item, const char *path, fg_absorption *o
     return json_fail(err, err_size, path, "expected \"off\", \"iso9613\" or \"abe_fir\"");
 }
 
-static int parse_absorption(const cJSON *obj, const char *base, fg_propagation *p, char *err,
+static int parse_absorption(const cJSON *obj, const char *base, fg_propagation_config *p, char *err,
                             size_t err_size)
 {
     static const char *const keys[] = {"model", "distance", NULL};
@@ -106,7 +106,7 @@ static int parse_absorption(const cJSON *obj, const char *base, fg_propagation *
                : 0;
 }
 
-static int parse_ground(const cJSON *obj, const char *base, fg_propagation *p, char *err,
+static int parse_ground(const cJSON *obj, const char *base, fg_propagation_config *p, char *err,
                         size_t err_size)
 {
     static const char *const keys[] = {"reflection", NULL};
@@ -123,7 +123,7 @@ static int parse_ground(const cJSON *obj, const char *base, fg_propagation *p, c
                : 0;
 }
 
-int scene_parse_propagation(const cJSON *item, const char *path, fg_propagation *p, char *err,
+int scene_parse_propagation(const cJSON *item, const char *path, fg_propagation_config *p, char *err,
                             size_t err_size)
 {
     char key[JSON_PATH_MAX];

@@ -130,8 +130,8 @@ static int loop(view *v, fgg_context *ctx, fgg_picture *pic, char *err, size_t e
 
 static void summary(view *v, uint32_t frames)
 {
-    fg_engine_stats st;
-    fg_engine_get_stats(v->engine, &st);
+    fg_engine_report st;
+    fg_engine_get_report(v->engine, &st);
     FILE *to = v->opt.audio == RUN_AUDIO_RAW ? stderr : stdout;
     fprintf(to,
             "{\"frames\": %u, \"requests\": %llu, \"posted\": %llu, \"adopted\": %llu, "

@@ -31,7 +31,7 @@ static int grow_charges(const view_request *q, fg_tree *tree, char *err, size_t 
         if (c->charge_c * first->charge_c < 0 && d < best && d > 0)
             best = d, target = c;
     }
-    fg_charges_params p = {.charges = q->charges, .charge_count = q->charge_count,
+    fg_charges_config p = {.charges = q->charges, .charge_count = q->charge_count,
                            .step_m = q->step_m, .seed = q->seed, .max_nodes = 20000};
     double dir[3] = {0, 0, -1};
     if (target) {

@@ -421,7 +421,7 @@ static const input_case cases[] = {
 };
 
 /* blocks_over_budget depends on the machine's speed: not compared */
-static void stats_equal(const char *name, const char *when, fg_engine_stats a, fg_engine_stats b)
+static void stats_equal(const char *name, const char *when, fg_engine_report a, fg_engine_report b)
 {
     a.blocks_over_budget = b.blocks_over_budget = 0;
     CHECK(memcmp(&a, &b, sizeof a) == 0,
@@ -456,9 +456,9 @@ static void test_sweep(void **state)
         CHECK(got == ic->want, "%s: returned %d (%s), documented %d (%s)", ic->name, got,
               fg_result_str(got), ic->want, fg_result_str(ic->want));
 
-        fg_engine_stats sa, sb;
-        fg_engine_get_stats(a, &sa);
-        fg_engine_get_stats(b, &sb);
+        fg_engine_report sa, sb;
+        fg_engine_get_report(a, &sa);
+        fg_engine_get_report(b, &sb);
         sb.dropped_posts += ic->dropped;
         stats_equal(ic->name, "after the bad call", sa, sb);
         CHECK(fg_engine_frames(a) == fg_engine_frames(b), "%s: the clock moved", ic->name);
@@ -479,8 +479,8 @@ static void test_sweep(void **state)
         CHECK(fx_peak(out_b[0], REF_BLOCKS * BLOCK) > 0, "%s: the reference is silent", ic->name);
         CHECK(memcmp(out_a, out_b, sizeof out_a) == 0, "%s: output differs from a fresh engine",
               ic->name);
-        fg_engine_get_stats(a, &sa);
-        fg_engine_get_stats(b, &sb);
+        fg_engine_get_report(a, &sa);
+        fg_engine_get_report(b, &sb);
         sb.dropped_posts += ic->dropped;
         stats_equal(ic->name, "after the next render", sa, sb);
         fg_engine_destroy(a);

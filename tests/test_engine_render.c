@@ -23,7 +23,7 @@
 
 typedef struct scene {
     fg_node nodes[NODES];
-    fg_sound_params sound;
+    fg_sound_config sound;
     double emit_s;
 } scene;
 
@@ -140,8 +140,8 @@ static void run(uint32_t block, int moving)
         }
     assert_true(peak > 1e-3);
     assert_true(err <= 1e-5 * peak);
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     assert_int_equal(st.late_events, 0);
     assert_int_equal(st.finished, 1);
     fg_engine_destroy(e);

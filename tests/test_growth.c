@@ -15,7 +15,7 @@
 #include "growth/growth_internal.h"
 
 typedef struct scene {
-    fg_discharge_setup setup;
+    fg_field_scene setup;
     fg_field *field;
     fg_field_source src;
     fg_tree *tree;
@@ -23,7 +23,7 @@ typedef struct scene {
 
 static void scene_init(scene *s, fg_preset preset, int size)
 {
-    assert_int_equal(fg_discharge_preset(preset, size, &s->setup), FG_OK);
+    assert_int_equal(fg_field_scene_preset(preset, size, &s->setup), FG_OK);
     assert_int_equal(fg_field_create(&s->setup.grid, &s->field), FG_OK);
     assert_int_equal(fg_field_set_shapes(s->field, s->setup.shapes, s->setup.shape_count, NULL),
                      FG_OK);
@@ -464,10 +464,10 @@ static void bad_growth_input(void **state)
     assert_int_equal(fg_grow_matsuyama(NULL, &ok, s.tree, NULL), FG_ERR_NULL);
     assert_int_equal(fg_grow_matsuyama(&s.src, &ok, NULL, NULL), FG_ERR_NULL);
     assert_int_equal(fg_grow_dbm(NULL, &ok, s.tree, NULL), FG_ERR_NULL);
-    fg_discharge_setup d;
-    assert_int_equal(fg_discharge_preset(FG_PRESET_LIGHTNING, 65, &d), FG_ERR_ARGUMENT);
-    assert_int_equal(fg_discharge_preset(FG_PRESET_SPARK_BALLS, 300, &d), FG_ERR_ARGUMENT);
-    assert_int_equal(fg_discharge_preset(FG_PRESET_SPARK_BALLS, 65, NULL), FG_ERR_NULL);
+    fg_field_scene d;
+    assert_int_equal(fg_field_scene_preset(FG_PRESET_LIGHTNING, 65, &d), FG_ERR_ARGUMENT);
+    assert_int_equal(fg_field_scene_preset(FG_PRESET_SPARK_BALLS, 300, &d), FG_ERR_ARGUMENT);
+    assert_int_equal(fg_field_scene_preset(FG_PRESET_SPARK_BALLS, 65, NULL), FG_ERR_NULL);
     scene_deinit(&s);
 }
 

@@ -24,7 +24,7 @@
 
 typedef struct render_case {
     fg_node nodes[2];
-    fg_propagation prop;
+    fg_propagation_config prop;
     fg_voice_model model;
     uint32_t channels;
     double seconds;
@@ -58,8 +58,8 @@ static float **render(const render_case *rc, size_t *frames)
     for (uint32_t ch = 0; ch < rc->channels; ch++)
         planes[ch] = calloc(*frames, sizeof **planes);
     fx_render(e, planes, rc->channels, *frames, 256);
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     assert_int_equal(st.late_events, 0);
     fg_engine_destroy(e);
     return planes;
@@ -277,7 +277,7 @@ static void abe_model_falls_in_pitch(void **state)
 static void bad_propagation_is_refused(void **state)
 {
     (void)state;
-    static const fg_propagation bad[] = {
+    static const fg_propagation_config bad[] = {
         {.refraction_radius_m = 5000.0},
         {.refraction_radius_m = NAN},
         {.turbulence_s = -1e-3},
@@ -299,8 +299,8 @@ static void bad_propagation_is_refused(void **state)
     fg_discharge d = {.nodes = rc.nodes, .node_count = 2, .model = (fg_voice_model)9};
     assert_int_equal(fg_preset_sound(FG_PRESET_LIGHTNING, &d.sound), FG_OK);
     assert_int_equal(fg_engine_post(e, &d, NULL), FG_ERR_ARGUMENT);
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     assert_int_equal(st.posted, 0);
     fg_engine_destroy(e);
 }

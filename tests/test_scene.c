@@ -211,7 +211,7 @@ static void test_defaults(void **state)
 
     assert_int_equal(s.discharge_count, 1);
     const scene_discharge *d = &s.discharges[0];
-    fg_sound_params preset;
+    fg_sound_config preset;
     assert_int_equal(fg_preset_sound(FG_PRESET_SPARK_BALLS, &preset), FG_OK);
     assert_memory_equal(&d->sound, &preset, sizeof preset);
     assert_int_equal(d->preset, FG_PRESET_SPARK_BALLS);
@@ -282,7 +282,7 @@ static void test_propagation(void **state)
     assert_int_equal(parse(json, &s, err, sizeof err), 0);
     assert_true(s.temperature_c == 10 && s.humidity_pct == 40 && s.pressure_kpa == 95);
     assert_true(fabs(s.speed_of_sound_m_s - 337.5) < 1e-12);
-    const fg_propagation *a = &s.discharges[0].propagation, *b = &s.discharges[1].propagation;
+    const fg_propagation_config *a = &s.discharges[0].propagation, *b = &s.discharges[1].propagation;
     assert_true(a->refraction_radius_m == FG_REFRACTION_STORM_M);
     assert_true(a->turbulence_s == 0.001 && a->turbulence_length_m == FG_TURBULENCE_DEFAULT_LENGTH_M);
     assert_int_equal(a->absorption, FG_ABSORPTION_ISO9613);
@@ -296,8 +296,8 @@ static void test_propagation(void **state)
     assert_true(b->ground_reflection == 0);
     assert_int_equal(b->head_shadow, 1);
     assert_int_equal(s.discharges[1].model, FG_MODEL_ABE);
-    assert_int_equal(fg_propagation_check(a), FG_OK);
-    assert_int_equal(fg_propagation_check(b), FG_OK);
+    assert_int_equal(fg_propagation_config_check(a), FG_OK);
+    assert_int_equal(fg_propagation_config_check(b), FG_OK);
     scene_deinit(&s);
 }
 

@@ -211,8 +211,8 @@ static void renders_the_closed_form(void **state)
                 fail_msg("%s, ear %d: peak %.6g for 2/r = %.6g, worst error %.3g", tc->name, ch,
                          peak, level, worst);
         }
-        fg_engine_stats st;
-        fg_engine_get_stats(e, &st);
+        fg_engine_report st;
+        fg_engine_get_report(e, &st);
         assert_int_equal(st.posted, 1);
         assert_int_equal(st.adopted, 1);
         assert_int_equal(st.finished, 1);
@@ -260,8 +260,8 @@ static void refuses_unknown_and_repeated_kinds(void **state)
     assert_int_equal(fg_engine_create(NULL, &e), FG_OK);
     texture_source d = {.amplitude_pa_m = 1.0, .frequency_hz = 100.0, .duration_s = 1.0};
     assert_int_equal(fg_engine_post_source(e, &texture_ops, &d, NULL), FG_ERR_UNSUPPORTED);
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     assert_int_equal(st.posted, 0);
     fg_engine_destroy(e);
     const fg_source_kind *twice[] = {&texture_kind, &texture_kind};

@@ -21,7 +21,7 @@ static fg_result field_ready(preset_field *pf, fg_preset preset, fg_field **out)
 {
     if (!pf->field) {
         fg_field *field;
-        fg_result r = fg_discharge_preset(preset, 0, &pf->setup);
+        fg_result r = fg_field_scene_preset(preset, 0, &pf->setup);
         if (r == FG_OK)
             r = fg_field_create(&pf->setup.grid, &field);
         if (r != FG_OK)
@@ -76,7 +76,7 @@ static fg_result grow(plugin *p, const work_request *rq, const fg_node **nodes)
     fg_tree_clear(p->tree);
     if (c->preset == FG_PRESET_LIGHTNING) {
         /* a cloud-to-ground bolt strikes the ground: elevation does not apply */
-        fg_lightning_params lp = {.strike_m = {head.position[0] + d * sin(az),
+        fg_lightning_config lp = {.strike_m = {head.position[0] + d * sin(az),
                                                head.position[1] + d * cos(az)},
                                   .seed = rq->seed};
         fg_result r = fg_lightning_generate(&lp, p->tree, NULL);

@@ -78,7 +78,7 @@ typedef struct work_reply {
 
 /* Fields of Matsuyama's presets, grown in on the worker. */
 typedef struct preset_field {
-    fg_discharge_setup setup;
+    fg_field_scene setup;
     fg_field *field;     /* NULL until the first note of the preset (solved then) */
 } preset_field;
 

@@ -27,7 +27,7 @@ static void fuzz_scene(const char *text, size_t size)
         const scene_discharge *d = &s.discharges[i];
         if (!d->generator && fg_tree_check(d->nodes, d->node_count, NULL) != FG_OK)
             abort();
-        if (fg_sound_params_check(&d->sound) != FG_OK)
+        if (fg_sound_config_check(&d->sound) != FG_OK)
             abort();
     }
     fg_listener pose;

@@ -27,8 +27,8 @@ typedef struct fg_engine_config {
     double sample_rate_hz;        /* 48000; must lie in [8000, 384000] */
     uint32_t max_block_frames;    /* 4096; the largest nframes render accepts, <= 65536 */
     uint32_t channels;            /* 2; 1 = one ear at the listener's centre, 2 = two ears */
-    uint32_t max_voices;          /* 64; discharges alive at once (posted, sounding or uncollected) */
-    uint32_t segment_capacity;    /* 131072; segments held by all live voices together */
+    uint32_t max_voices;          /* 64; voices alive at once (posted, sounding or uncollected) */
+    uint32_t segment_capacity;    /* 131072; segments held by all live discharges together */
     double speed_of_sound_m_s;    /* 343; 331.5 + 0.6 * (temperature in degC) */
     double ear_spacing_m;         /* 0.18; distance between the two ears */
     double max_lookahead_s;       /* 0.25; cap on the motion look-ahead (see fg_engine_render) */
@@ -39,6 +39,13 @@ typedef struct fg_engine_config {
     double air_pressure_kpa;      /* 101.325 */
 } fg_engine_config;
 
+/* The voice model a discharge is rendered with. */
+typedef enum fg_voice_model {
+    FG_MODEL_WM = 0,   /* one WM-wave per segment (Matsuyama) */
+    FG_MODEL_ABE = 1   /* Abe et al.: harmonic-series N-waves per node, falling in
+                        * pitch and level, pitch set by height, loudness ~ 1/r^2 */
+} fg_voice_model;
+
 /* Strokes of one discharge at most (the log-series tail is cut here). */
 #define FG_MAX_STROKES 32
 
@@ -48,7 +55,7 @@ typedef struct fg_engine_config {
 typedef struct fg_discharge {
     const fg_node *nodes;   /* borrowed for the duration of fg_engine_post */
     size_t node_count;
-    fg_sound_params sound;
+    fg_sound_config sound;
     double emit_time_s;     /* engine clock, >= 0, or FG_EMIT_NOW */
     uint32_t strokes;       /* 0: drawn from the log-series law; else 1..FG_MAX_STROKES */
     int continuous;         /* non-zero: re-emit the pattern until stopped (plasma ball, held gap) */
@@ -56,7 +63,7 @@ typedef struct fg_discharge {
     double repeat_max_s;
     double duration_s;      /* continuous: stop after this long; 0 = until fg_engine_stop */
     uint64_t seed;          /* T0 fluctuation, strokes, repeats, turbulence */
-    fg_propagation propagation; /* zero: free, still air */
+    fg_propagation_config propagation; /* zero: free, still air */
     fg_voice_model model;   /* FG_MODEL_WM (zero) or FG_MODEL_ABE */
 } fg_discharge;
 
@@ -70,7 +77,7 @@ typedef struct fg_listener {
     double velocity[3];  /* m/s; informational (geometry follows the pose each block) */
 } fg_listener;
 
-typedef struct fg_engine_stats {
+typedef struct fg_engine_report {
     uint64_t posted;            /* voices accepted by fg_engine_post */
     uint64_t dropped_posts;     /* posts refused for a full pool or queue */
     uint64_t adopted;           /* voices taken by the audio thread */
@@ -81,7 +88,7 @@ typedef struct fg_engine_stats {
     uint64_t skipped_repeats;   /* continuous repeats dropped for lack of instance slots */
     uint64_t blocks;            /* successful render calls of one frame or more */
     uint64_t blocks_over_budget;/* render calls that took longer than their frames last */
-} fg_engine_stats;
+} fg_engine_report;
 
 /* The start of each stroke of the discharge, seconds after its emit time,
  * exactly as fg_engine_post will schedule them (they depend on seed,
@@ -120,7 +127,7 @@ FG_API void fg_engine_get_config(const fg_engine *engine, fg_engine_config *out)
  * [sim-thread]
  * Errors: FG_ERR_NULL engine/discharge/nodes; FG_ERR_TREE the tree fails
  * fg_tree_check; FG_ERR_NOT_FINITE / FG_ERR_ARGUMENT a parameter (see
- * fg_sound_params_check and fg_propagation_check, strokes > FG_MAX_STROKES,
+ * fg_sound_config_check and fg_propagation_config_check, strokes > FG_MAX_STROKES,
  * negative emit time other than FG_EMIT_NOW, continuous with strokes > 1,
  * repeat range outside (0, 10 s] or min > max, unknown model);
  * FG_ERR_CAPACITY more segments than segment_capacity (a ground image
@@ -170,7 +177,7 @@ FG_API FG_NODISCARD fg_result fg_engine_set_listener(fg_engine *engine, const fg
 FG_API void fg_engine_get_listener(const fg_engine *engine, fg_listener *out);
 
 /* A snapshot of the counters. [any-thread] */
-FG_API void fg_engine_get_stats(const fg_engine *engine, fg_engine_stats *out);
+FG_API void fg_engine_get_report(const fg_engine *engine, fg_engine_report *out);
 
 /* The engine clock: frames rendered so far, and the same in seconds.
  * [any-thread] */

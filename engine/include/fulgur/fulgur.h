@@ -4,7 +4,7 @@
 
 #include "fulgur/charges.h"
 #include "fulgur/defs.h"
-#include "fulgur/discharge.h"
+#include "fulgur/field_scene.h"
 #include "fulgur/engine.h"
 #include "fulgur/field.h"
 #include "fulgur/growth.h"

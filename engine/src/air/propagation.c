@@ -2,7 +2,7 @@
 
 #include "fulgur/propagation.h"
 
-fg_result fg_propagation_check(const fg_propagation *p)
+fg_result fg_propagation_config_check(const fg_propagation_config *p)
 {
     if (!p)
         return FG_ERR_NULL;

@@ -197,7 +197,7 @@ void fg_engine_get_listener(const fg_engine *e, fg_listener *out)
         fg_listener_cell_read(&e->listener, out, &serial);
 }
 
-void fg_engine_get_stats(const fg_engine *e, fg_engine_stats *out)
+void fg_engine_get_report(const fg_engine *e, fg_engine_report *out)
 {
     if (!e || !out)
         return;

@@ -1,10 +1,10 @@
-/* The spark-ball and plasma-ball scenes of fulgur/discharge.h. The branch
+/* The spark-ball and plasma-ball scenes of fulgur/field_scene.h. The branch
  * parameters are tuned so that the mean segment count over seeds is near
  * Matsuyama's table 2 (72 for spark balls, 78 for the plasma ball); the
  * figures measured are in bench/results/field_solve.csv. */
 #include <string.h>
 
-#include "fulgur/discharge.h"
+#include "fulgur/field_scene.h"
 
 #define SPARK_RADIUS_M 0.01
 #define SPARK_GAP_M 0.02
@@ -25,7 +25,7 @@ static fg_grid_config cube(int size, double half_m)
                             .max_m = {half_m, half_m, half_m}};
 }
 
-fg_result fg_discharge_preset(fg_preset preset, int size, fg_discharge_setup *out)
+fg_result fg_field_scene_preset(fg_preset preset, int size, fg_field_scene *out)
 {
     if (!out)
         return FG_ERR_NULL;
@@ -36,7 +36,7 @@ fg_result fg_discharge_preset(fg_preset preset, int size, fg_discharge_setup *ou
         fg_preset_get_scale(preset, &scale) != FG_OK)
         return FG_ERR_ARGUMENT;
     double step = 2.0 * scale.half_step_m;
-    fg_discharge_setup s;
+    fg_field_scene s;
     memset(&s, 0, sizeof s);
     if (preset == FG_PRESET_SPARK_BALLS) {
         double cx = 0.5 * SPARK_GAP_M + SPARK_RADIUS_M;

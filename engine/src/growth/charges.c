@@ -46,11 +46,11 @@ static int finite3(const double p[3])
     return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]);
 }
 
-fg_result fg_charges_params_resolve(const fg_charges_params *in, fg_charges_params *out)
+fg_result fg_charges_config_resolve(const fg_charges_config *in, fg_charges_config *out)
 {
     if (!in || !out)
         return FG_ERR_NULL;
-    fg_charges_params p = *in;
+    fg_charges_config p = *in;
     if (p.charge_count == 0)
         return FG_ERR_ARGUMENT;
     if (!p.charges)
@@ -131,7 +131,7 @@ static int tip_cmp(const void *a, const void *b)
 }
 
 typedef struct grower {
-    const fg_charges_params *p;
+    const fg_charges_config *p;
     fg_tree *tree;
     fg_rng rng;
     double sign;
@@ -144,7 +144,7 @@ typedef struct grower {
 
 /* Where the step from a to candidate c ends: on the target if it gets
  * there (*reached set), else at c. */
-static fg_vec3 step_end(const fg_charges_params *p, fg_vec3 a, fg_vec3 c, int *reached)
+static fg_vec3 step_end(const fg_charges_config *p, fg_vec3 a, fg_vec3 c, int *reached)
 {
     if (p->target_radius_m == 0) {
         *reached = c.z <= 0;
@@ -160,7 +160,7 @@ static fg_vec3 step_end(const fg_charges_params *p, fg_vec3 a, fg_vec3 c, int *r
  * *done when one of them reaches the target. */
 static fg_result advance(grower *g, const tip *t, int *done)
 {
-    const fg_charges_params *p = g->p;
+    const fg_charges_config *p = g->p;
     const fg_node *n = &fg_tree_nodes(g->tree)[t->node];
     fg_vec3 a = fg_v3(n->x, n->y, n->z);
     double phi = potential(p->charges, p->charge_count, a);
@@ -198,7 +198,7 @@ static fg_result advance(grower *g, const tip *t, int *done)
 
 static fg_result grow(grower *g)
 {
-    const fg_charges_params *p = g->p;
+    const fg_charges_config *p = g->p;
     fg_vec3 root = v3_of(p->start_m);
     fg_vec3 goal = p->target_radius_m > 0 ? v3_of(p->target_m) : fg_v3(root.x, root.y, 0);
     g->sign = potential(p->charges, p->charge_count, goal) >=
@@ -227,10 +227,10 @@ static fg_result grow(grower *g)
     return FG_OK;
 }
 
-fg_result fg_charges_grow(const fg_charges_params *params, fg_tree *out)
+fg_result fg_charges_grow(const fg_charges_config *params, fg_tree *out)
 {
-    fg_charges_params p;
-    fg_result r = fg_charges_params_resolve(params, &p);
+    fg_charges_config p;
+    fg_result r = fg_charges_config_resolve(params, &p);
     if (r != FG_OK)
         return r;
     if (!out)

@@ -1,4 +1,4 @@
-/* Designer thunder: the skeleton is cut into pieces at the blocks' ends.
+/* Designer thunder: the skeleton is cut into pieces at the features' ends.
  * Clap and rumble pieces are rebuilt as an arc or a line starting where the
  * channel is; runs of the other pieces keep the original shape, sheared
  * linearly along their length so that they join the rebuilt ones and still
@@ -12,35 +12,35 @@
 
 typedef struct piece {
     double u0, u1;      /* fractions of the original length */
-    int block;          /* index into blocks, or -1 for plain */
+    int feature;          /* index into features, or -1 for plain */
 } piece;
 
-static int is_rebuilt(const fg_thunder_block *blocks, const piece *pc)
+static int is_rebuilt(const fg_thunder_feature *features, const piece *pc)
 {
-    return pc->block >= 0 && blocks[pc->block].feature != FG_THUNDER_ROAR;
+    return pc->feature >= 0 && features[pc->feature].kind != FG_THUNDER_ROAR;
 }
 
-static double amp(const fg_thunder_block *b)
+static double amp(const fg_thunder_feature *b)
 {
     return b->amplitude > 0 ? b->amplitude : 1.0;
 }
 
 /* Cuts [0, 1] into pieces in order; returns how many. */
-static size_t cut(const fg_thunder_block *blocks, size_t count, piece *pieces)
+static size_t cut(const fg_thunder_feature *features, size_t count, piece *pieces)
 {
     size_t n = 0;
     double u = 0;
     for (;;) {
         int next = -1;
         for (size_t i = 0; i < count; i++)
-            if (blocks[i].start >= u && (next < 0 || blocks[i].start < blocks[next].start))
+            if (features[i].start >= u && (next < 0 || features[i].start < features[next].start))
                 next = (int)i;
         if (next < 0)
             break;
-        if (blocks[next].start > u)
-            pieces[n++] = (piece){u, blocks[next].start, -1};
-        pieces[n++] = (piece){blocks[next].start, blocks[next].end, next};
-        u = blocks[next].end;
+        if (features[next].start > u)
+            pieces[n++] = (piece){u, features[next].start, -1};
+        pieces[n++] = (piece){features[next].start, features[next].end, next};
+        u = features[next].end;
     }
     if (u < 1)
         pieces[n++] = (piece){u, 1, -1};
@@ -60,8 +60,8 @@ static fg_result shear_run(const fg_skeleton *in, const piece *pieces, size_t fi
     fg_result r = FG_OK;
     for (size_t j = first; j <= last && r == FG_OK; j++) {
         const piece *pc = &pieces[j];
-        if (pc->block >= 0)
-            stretches[pc->block].s0 = fg_skeleton_length(out);
+        if (pc->feature >= 0)
+            stretches[pc->feature].s0 = fg_skeleton_length(out);
         for (size_t i = 0; i < in->n && r == FG_OK; i++) {
             double u = in->s[i] / len;
             if (u <= pc->u0 || u >= pc->u1)
@@ -73,14 +73,14 @@ static fg_result shear_run(const fg_skeleton *in, const piece *pieces, size_t fi
         if (r == FG_OK)
             r = fg_skeleton_push(out, fg_v3_add(fg_skeleton_at(in, pc->u1 * len),
                                                 fg_v3_scale(da, 1 - w)));
-        if (pc->block >= 0)
-            stretches[pc->block].s1 = fg_skeleton_length(out);
+        if (pc->feature >= 0)
+            stretches[pc->feature].s1 = fg_skeleton_length(out);
     }
     return r;
 }
 
 /* A clap arc or a rumble line of the piece's length from the current end. */
-static fg_result rebuild(const fg_skeleton *in, const fg_thunder_block *b, const piece *pc,
+static fg_result rebuild(const fg_skeleton *in, const fg_thunder_feature *b, const piece *pc,
                          fg_vec3 listener, fg_skeleton *out, fg_stretch *st)
 {
     double len = fg_skeleton_length(in), lambda = (pc->u1 - pc->u0) * len;
@@ -95,7 +95,7 @@ static fg_result rebuild(const fg_skeleton *in, const fg_thunder_block *b, const
     st->radius_m = radius;
     size_t samples = (size_t)ceil(lambda / SAMPLE_M);
     fg_result r = FG_OK;
-    if (b->feature == FG_THUNDER_CLAP) {
+    if (b->kind == FG_THUNDER_CLAP) {
         if (lambda > FG_PI * radius)
             return FG_ERR_ARGUMENT;
         fg_vec3 t = fg_v3_sub(chord, fg_v3_scale(n, fg_v3_dot(chord, n)));
@@ -121,23 +121,23 @@ static fg_result rebuild(const fg_skeleton *in, const fg_thunder_block *b, const
     return r;
 }
 
-fg_result fg_designer_shape(const fg_skeleton *in, const fg_thunder_block *blocks, size_t count,
+fg_result fg_designer_shape(const fg_skeleton *in, const fg_thunder_feature *features, size_t count,
                             fg_vec3 listener, fg_skeleton *out, fg_stretch *stretches)
 {
-    piece pieces[2 * FG_THUNDER_MAX_BLOCKS + 1];
-    size_t n = cut(blocks, count, pieces);
+    piece pieces[2 * FG_THUNDER_MAX_FEATURES + 1];
+    size_t n = cut(features, count, pieces);
     fg_result r = fg_skeleton_push(out, in->p[0]);
     for (size_t j = 0; j < n && r == FG_OK; j++) {
-        if (pieces[j].block >= 0)
-            stretches[pieces[j].block].radius_m =
+        if (pieces[j].feature >= 0)
+            stretches[pieces[j].feature].radius_m =
                 fg_v3_len(fg_v3_sub(out->p[out->n - 1], listener));
-        if (is_rebuilt(blocks, &pieces[j])) {
-            r = rebuild(in, &blocks[pieces[j].block], &pieces[j], listener, out,
-                        &stretches[pieces[j].block]);
+        if (is_rebuilt(features, &pieces[j])) {
+            r = rebuild(in, &features[pieces[j].feature], &pieces[j], listener, out,
+                        &stretches[pieces[j].feature]);
             continue;
         }
         size_t last = j;
-        while (last + 1 < n && !is_rebuilt(blocks, &pieces[last + 1]))
+        while (last + 1 < n && !is_rebuilt(features, &pieces[last + 1]))
             last++;
         r = shear_run(in, pieces, j, last, out, stretches);
         j = last;

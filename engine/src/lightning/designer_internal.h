@@ -1,4 +1,4 @@
-/* Designer thunder: reshaping a skeleton so that blocks of clap, rumble and
+/* Designer thunder: reshaping a skeleton so that features of clap, rumble and
  * roar happen (Glassner part 2). The rules are in fulgur/lightning.h. */
 #ifndef FULGUR_DESIGNER_INTERNAL_H
 #define FULGUR_DESIGNER_INTERNAL_H
@@ -6,18 +6,18 @@
 #include "fulgur/lightning.h"
 #include "lightning/skeleton_internal.h"
 
-/* A block's stretch on the reshaped skeleton. */
+/* A feature's stretch on the reshaped skeleton. */
 typedef struct fg_stretch {
     double s0, s1;      /* arclength on the reshaped skeleton, metres */
     double radius_m;    /* listener to the stretch's start (clap: the arc radius) */
 } fg_stretch;
 
-/* Builds out (empty on entry) from in for the blocks (already checked by
- * fg_lightning_params_resolve) and fills stretches[i] for blocks[i].
+/* Builds out (empty on entry) from in for the features (already checked by
+ * fg_lightning_config_resolve) and fills stretches[i] for features[i].
  * Errors: FG_ERR_ARGUMENT a clap stretch starting on the listener or longer
  * than half its circle, or a shape taking the skeleton below the ground;
  * FG_ERR_NO_MEMORY. */
-fg_result fg_designer_shape(const fg_skeleton *in, const fg_thunder_block *blocks, size_t count,
+fg_result fg_designer_shape(const fg_skeleton *in, const fg_thunder_feature *features, size_t count,
                             fg_vec3 listener, fg_skeleton *out, fg_stretch *stretches);
 
 #endif

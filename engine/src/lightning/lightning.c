@@ -1,5 +1,5 @@
 /* Statistical lightning: the tortuous walk along a skeleton, its branches,
- * and the designer blocks' effect on the walk (rules in fulgur/lightning.h). */
+ * and the designer features' effect on the walk (rules in fulgur/lightning.h). */
 #include <stdlib.h>
 
 #include "lightning/designer_internal.h"
@@ -24,7 +24,7 @@ typedef struct spawn {
 } spawn;
 
 typedef struct walker {
-    const fg_lightning_params *p;
+    const fg_lightning_config *p;
     const fg_skeleton *skel;
     const fg_stretch *stretches;
     fg_tree *tree;
@@ -64,10 +64,10 @@ static fg_result add(walker *w, fg_vec3 q, size_t parent, uint32_t flags, uint32
     return FG_OK;
 }
 
-/* The designer block whose stretch holds arclength s, or -1. */
-static int block_at(const walker *w, double s)
+/* The designer feature whose stretch holds arclength s, or -1. */
+static int feature_at(const walker *w, double s)
 {
-    for (size_t i = 0; i < w->p->block_count; i++)
+    for (size_t i = 0; i < w->p->feature_count; i++)
         if (s >= w->stretches[i].s0 && s < w->stretches[i].s1)
             return (int)i;
     return -1;
@@ -97,7 +97,7 @@ static fg_vec3 ground_hit(fg_vec3 a, fg_vec3 b)
 
 static fg_result walk_main(walker *w)
 {
-    const fg_lightning_params *p = w->p;
+    const fg_lightning_config *p = w->p;
     const fg_skeleton *k = w->skel;
     double step = p->segment_m, total = fg_skeleton_length(k);
     fg_vec3 listener = fg_v3(p->listener_m[0], p->listener_m[1], p->listener_m[2]);
@@ -119,9 +119,9 @@ static fg_result walk_main(walker *w)
             return r;
         }
         double s = fg_skeleton_project(k, pos, &hint);
-        int b = block_at(w, s);
-        fg_thunder_feature f = b >= 0 ? p->blocks[b].feature : 0;
-        double a = b >= 0 && p->blocks[b].amplitude > 0 ? p->blocks[b].amplitude : 1;
+        int b = feature_at(w, s);
+        fg_thunder_kind f = b >= 0 ? p->features[b].kind : 0;
+        double a = b >= 0 && p->features[b].amplitude > 0 ? p->features[b].amplitude : 1;
         double mean = p->turn_mean_deg * deg * (f == FG_THUNDER_ROAR ? 1 + ROAR_GAIN * a : 1);
         fg_vec3 heading = fg_v3_unit(fg_v3_sub(fg_skeleton_at(k, s + p->lookahead_m), pos));
         dir = turn(w, dir, heading, mean);
@@ -140,7 +140,7 @@ static fg_result walk_main(walker *w)
 
 static fg_result grow_branch(walker *w, spawn sp)
 {
-    const fg_lightning_params *p = w->p;
+    const fg_lightning_config *p = w->p;
     const fg_node *n = &fg_tree_nodes(w->tree)[sp.node];
     fg_vec3 pos = fg_v3(n->x, n->y, n->z);
     double angle = fg_rng_range(&w->rng, BRANCH_ANGLE_MIN_DEG, BRANCH_ANGLE_MAX_DEG) * deg;
@@ -162,15 +162,15 @@ static fg_result grow_branch(walker *w, spawn sp)
     return FG_OK;
 }
 
-static void fill_info(const walker *w, size_t main_nodes, fg_lightning_info *info)
+static void fill_info(const walker *w, size_t main_nodes, fg_lightning_report *info)
 {
     const fg_node *nodes = fg_tree_nodes(w->tree);
-    *info = (fg_lightning_info){.main_nodes = main_nodes,
+    *info = (fg_lightning_report){.main_nodes = main_nodes,
                                 .segments = fg_tree_count(w->tree) - 1,
                                 .skeleton_length_m = fg_skeleton_length(w->skel)};
-    for (size_t i = 0; i < w->p->block_count; i++) {
-        info->blocks[i].distance_m = w->stretches[i].radius_m;
-        info->blocks[i].first_node = main_nodes; /* none yet */
+    for (size_t i = 0; i < w->p->feature_count; i++) {
+        info->features[i].distance_m = w->stretches[i].radius_m;
+        info->features[i].first_node = main_nodes; /* none yet */
     }
     size_t hint = 0;
     for (size_t i = 0; i < main_nodes; i++) {
@@ -179,18 +179,18 @@ static void fill_info(const walker *w, size_t main_nodes, fg_lightning_info *inf
             const fg_node *a = &nodes[i - 1];
             info->main_length_m += fg_v3_len(fg_v3_sub(q, fg_v3(a->x, a->y, a->z)));
         }
-        int b = block_at(w, fg_skeleton_project(w->skel, q, &hint));
+        int b = feature_at(w, fg_skeleton_project(w->skel, q, &hint));
         if (b < 0)
             continue;
-        if (info->blocks[b].first_node == main_nodes)
-            info->blocks[b].first_node = i;
-        info->blocks[b].last_node = i;
+        if (info->features[b].first_node == main_nodes)
+            info->features[b].first_node = i;
+        info->features[b].last_node = i;
     }
 }
 
 static fg_result build(walker *w, fg_skeleton *base, fg_skeleton *shaped, fg_stretch *stretches)
 {
-    const fg_lightning_params *p = w->p;
+    const fg_lightning_config *p = w->p;
     fg_result r = FG_OK;
     if (p->skeleton_m)
         for (size_t i = 0; i < p->skeleton_points && r == FG_OK; i++)
@@ -201,7 +201,7 @@ static fg_result build(walker *w, fg_skeleton *base, fg_skeleton *shaped, fg_str
     if (r != FG_OK)
         return r;
     fg_vec3 listener = fg_v3(p->listener_m[0], p->listener_m[1], p->listener_m[2]);
-    if ((r = fg_designer_shape(base, p->blocks, p->block_count, listener, shaped, stretches)) !=
+    if ((r = fg_designer_shape(base, p->features, p->feature_count, listener, shaped, stretches)) !=
         FG_OK)
         return r;
     w->skel = shaped;
@@ -213,11 +213,11 @@ static fg_result build(walker *w, fg_skeleton *base, fg_skeleton *shaped, fg_str
     return r;
 }
 
-fg_result fg_lightning_generate(const fg_lightning_params *params, fg_tree *out,
-                                fg_lightning_info *info)
+fg_result fg_lightning_generate(const fg_lightning_config *params, fg_tree *out,
+                                fg_lightning_report *info)
 {
-    fg_lightning_params p;
-    fg_result r = fg_lightning_params_resolve(params, &p);
+    fg_lightning_config p;
+    fg_result r = fg_lightning_config_resolve(params, &p);
     if (r != FG_OK)
         return r;
     if (!out)
@@ -227,7 +227,7 @@ fg_result fg_lightning_generate(const fg_lightning_params *params, fg_tree *out,
     walker w = {.p = &p, .tree = out};
     fg_rng_seed(&w.rng, p.seed);
     fg_skeleton base = {0}, shaped = {0};
-    fg_stretch stretches[FG_THUNDER_MAX_BLOCKS] = {{0}};
+    fg_stretch stretches[FG_THUNDER_MAX_FEATURES] = {{0}};
     r = build(&w, &base, &shaped, stretches);
     if (r == FG_OK && info) {
         size_t main_nodes = 0;

@@ -39,20 +39,20 @@ static fg_result check_skeleton(const double *k, size_t n)
     return FG_OK;
 }
 
-static fg_result check_blocks(const fg_thunder_block *b, size_t n)
+static fg_result check_features(const fg_thunder_feature *b, size_t n)
 {
-    if (n > FG_THUNDER_MAX_BLOCKS)
+    if (n > FG_THUNDER_MAX_FEATURES)
         return FG_ERR_ARGUMENT;
     for (size_t i = 0; i < n; i++) {
         if (!isfinite(b[i].start) || !isfinite(b[i].end) || !isfinite(b[i].amplitude))
             return FG_ERR_NOT_FINITE;
-        if (b[i].feature < FG_THUNDER_CLAP || b[i].feature > FG_THUNDER_ROAR ||
+        if (b[i].kind < FG_THUNDER_CLAP || b[i].kind > FG_THUNDER_ROAR ||
             !(b[i].start >= 0 && b[i].start < b[i].end && b[i].end <= 1) ||
             b[i].amplitude < 0 || b[i].amplitude > 1)
             return FG_ERR_ARGUMENT;
         /* the channel must keep a free stretch after a rebuilt one to reach
          * the strike point */
-        if (b[i].feature != FG_THUNDER_ROAR && b[i].end == 1)
+        if (b[i].kind != FG_THUNDER_ROAR && b[i].end == 1)
             return FG_ERR_ARGUMENT;
         for (size_t j = 0; j < i; j++)
             if (b[i].start < b[j].end && b[j].start < b[i].end)
@@ -67,12 +67,12 @@ static fg_result check_blocks(const fg_thunder_block *b, size_t n)
             p.field = (value); \
     } while (0)
 
-fg_result fg_lightning_params_resolve(const fg_lightning_params *in, fg_lightning_params *out)
+fg_result fg_lightning_config_resolve(const fg_lightning_config *in, fg_lightning_config *out)
 {
     if (!in || !out)
         return FG_ERR_NULL;
-    fg_lightning_params p = *in;
-    if ((!p.skeleton_m && p.skeleton_points > 0) || (!p.blocks && p.block_count > 0))
+    fg_lightning_config p = *in;
+    if ((!p.skeleton_m && p.skeleton_points > 0) || (!p.features && p.feature_count > 0))
         return FG_ERR_NULL;
     double nums[] = {p.strike_m[0], p.strike_m[1], p.height_m, p.segment_m, p.turn_mean_deg,
                      p.max_deviation_deg, p.lookahead_m, p.branch_probability,
@@ -86,7 +86,7 @@ fg_result fg_lightning_params_resolve(const fg_lightning_params *in, fg_lightnin
     fg_result r;
     if (p.skeleton_m && (r = check_skeleton(p.skeleton_m, p.skeleton_points)) != FG_OK)
         return r;
-    if ((r = check_blocks(p.blocks, p.block_count)) != FG_OK)
+    if ((r = check_features(p.features, p.feature_count)) != FG_OK)
         return r;
     DEFAULT(height_m, DEFAULT_HEIGHT_M);
     fg_preset_scale scale;

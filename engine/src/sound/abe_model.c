@@ -11,7 +11,7 @@ static size_t abe_stride(size_t segments)
     return (segments + MAX_SOURCES - 1) / MAX_SOURCES;
 }
 
-static void abe_wave(const fg_sound_params *p, fg_event *ev, const fg_ear_path *path, int k)
+static void abe_wave(const fg_sound_config *p, fg_event *ev, const fg_ear_path *path, int k)
 {
     (void)p;
     fg_abe_wave_init(&ev->abe[k], &fg_abe_defaults, ev->mid, path->ear, 0.0, path->c_m_s);
@@ -44,8 +44,8 @@ static fg_wave_status abe_add(const fg_event *ev, const fg_event_play *play, lon
         if (play->share[k] == 0.0)
             continue;
         w.peak_pa = peak * play->share[k];
-        fg_abe_wave_render(&w, fs, 0, fg_bus_pre(play->buses, play->bus + k * FG_BUS_PLAIN, play->ch),
-                           play->frames);
+        float *out = fg_bus_pre(play->buses, play->bus + k * FG_BUS_PLAIN, play->ch);
+        fg_abe_wave_render(&w, fs, 0, out, play->frames);
     }
     return FG_WAVE_SOUNDING;
 }

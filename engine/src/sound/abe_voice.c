@@ -6,20 +6,20 @@
 #define SIXTY_DB 6.907755278982137 /* ln 1000 */
 #define MIN_DISTANCE_M 1.0
 
-const fg_abe_params fg_abe_defaults = {80.0, 20.0, 0.5, 0.12, 16, 5e-9, 1000.0, 1.0};
+const fg_abe_config fg_abe_defaults = {80.0, 20.0, 0.5, 0.12, 16, 5e-9, 1000.0, 1.0};
 
 static double speed_at(double temp_c)
 {
     return 331.5 + 0.6 * temp_c;
 }
 
-double fg_abe_fundamental_hz(const fg_abe_params *p, double height_m)
+double fg_abe_fundamental_hz(const fg_abe_config *p, double height_m)
 {
     double t = p->ground_temp_c - FG_ABE_LAPSE_K_PER_M * height_m;
     return p->f_ground_hz * speed_at(t) / speed_at(p->ground_temp_c);
 }
 
-void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_params *p, const double src[3],
+void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_config *p, const double src[3],
                       const double ear[3], double emit_s, double c_m_s)
 {
     double d2 = 0.0;

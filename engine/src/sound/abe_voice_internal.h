@@ -39,7 +39,7 @@
 #define FG_ABE_MAX_HARMONICS 64
 #define FG_ABE_LAPSE_K_PER_M 0.0065
 
-typedef struct fg_abe_params {
+typedef struct fg_abe_config {
     double f_ground_hz;      /* > 0: fundamental of a source at the ear's height; 80 */
     double ground_temp_c;    /* > -552.5 (c > 0): air temperature at the ear; 20 */
     double freq_decay_s;     /* > 0; 0.5 */
@@ -48,13 +48,13 @@ typedef struct fg_abe_params {
     double atten_db_m_hz2;   /* >= 0; 5e-9 */
     double ref_distance_m;   /* > 0; 1000 */
     double ref_peak_pa;      /* > 0: peak at ref_distance_m; 1 */
-} fg_abe_params;
+} fg_abe_config;
 
 /* The values in the comments above: what the engine plays. */
-extern const fg_abe_params fg_abe_defaults;
+extern const fg_abe_config fg_abe_defaults;
 
 /* The fundamental of a source height_m above the ear, Hz. */
-double fg_abe_fundamental_hz(const fg_abe_params *p, double height_m);
+double fg_abe_fundamental_hz(const fg_abe_config *p, double height_m);
 
 /* One source as heard by one ear, prepared off the audio thread. */
 typedef struct fg_abe_wave {
@@ -70,8 +70,8 @@ typedef struct fg_abe_wave {
 
 /* Prepares w for a source at src and an ear at ear (metres, z up), emitted
  * at emit_s, travelling at c_m_s. p holds the ranges in the comments of
- * fg_abe_params (the tests vary fg_abe_defaults within them). */
-void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_params *p, const double src[3],
+ * fg_abe_config (the tests vary fg_abe_defaults within them). */
+void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_config *p, const double src[3],
                       const double ear[3], double emit_s, double c_m_s);
 
 /* First and last sample (absolute index, sample k at time k / fs) that the

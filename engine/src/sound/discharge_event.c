@@ -7,7 +7,7 @@
 #include "air/refraction_internal.h"
 #include "sound/discharge_internal.h"
 
-static unsigned bus_of(const fg_bus_set *buses, const fg_propagation *p, double r)
+static unsigned bus_of(const fg_bus_set *buses, const fg_propagation_config *p, double r)
 {
     switch (p->absorption) {
     case FG_ABSORPTION_ISO9613:
@@ -26,7 +26,7 @@ void fg_event_geometry(const fg_discharge_voice *v, fg_event *ev, const fg_ears 
                        double c_m_s, const fg_bus_set *buses)
 {
     const double *ear = ears->pos[k];
-    const fg_propagation *pr = &v->propagation;
+    const fg_propagation_config *pr = &v->propagation;
     double c = c_m_s;
     fg_ear_path path = {.ear = ear, .c_m_s = c};
     double *d = path.d;

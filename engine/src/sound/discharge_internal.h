@@ -86,7 +86,7 @@ typedef struct fg_discharge_model {
     /* Writes ear k's wave of ev for the ear path (the union above and its
      * per-ear fields). [sim-thread at the post; audio-thread when the pose
      * changes] */
-    void (*wave)(const fg_sound_params *sound, fg_event *ev, const fg_ear_path *path, int k);
+    void (*wave)(const fg_sound_config *sound, fg_event *ev, const fg_ear_path *path, int k);
     /* When ear k's wave of ev starts sounding, seconds after the emission. */
     double (*start_s)(const fg_event *ev, int k, double c_m_s);
 } fg_discharge_model;
@@ -105,8 +105,8 @@ typedef struct fg_discharge_voice {
     uint32_t *main_index;      /* indices into events of the main channel, in order */
     uint32_t event_count, main_count;
     size_t extent;             /* offset of events/main_index in the kind's storage */
-    fg_sound_params sound;
-    fg_propagation propagation;
+    fg_sound_config sound;
+    fg_propagation_config propagation;
     double emit_time_s;        /* or FG_EMIT_NOW */
     double post_position[3];   /* listener centre when prepared */
     uint32_t strokes;

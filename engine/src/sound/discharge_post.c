@@ -25,9 +25,9 @@ void fg_discharge_repeat_range(const fg_discharge *d, double *min_s, double *max
 
 fg_result fg_discharge_check(const fg_discharge *d)
 {
-    fg_result r = fg_sound_params_check(&d->sound);
+    fg_result r = fg_sound_config_check(&d->sound);
     if (r == FG_OK)
-        r = fg_propagation_check(&d->propagation);
+        r = fg_propagation_config_check(&d->propagation);
     if (r != FG_OK)
         return r;
     if ((unsigned)d->model >= MODEL_COUNT)

@@ -74,7 +74,7 @@ static void segment_event(const fg_discharge *d, const fg_prep_scratch *s, size_
                           size_t i, fg_rng *rng, fg_event *ev)
 {
     const fg_node *nodes = d->nodes;
-    const fg_sound_params *p = &d->sound;
+    const fg_sound_config *p = &d->sound;
     const fg_node *a = &nodes[i], *b = &nodes[nodes[i].parent];
     double len = distance(a, b);
     ev->mid[0] = 0.5 * (a->x + b->x);
@@ -143,7 +143,7 @@ fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void
     v->sound = d->sound;
     v->propagation = d->propagation;
 
-    const fg_propagation *pr = &d->propagation;
+    const fg_propagation_config *pr = &d->propagation;
     fg_turbulence turbulence = {
         .seed = fg_rng_next(&rng),
         .amplitude_s = pr->turbulence_s,

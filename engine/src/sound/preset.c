@@ -31,13 +31,13 @@ static int known(fg_preset p)
     return (int)p >= 0 && p < FG_PRESET_COUNT;
 }
 
-fg_result fg_preset_sound(fg_preset preset, fg_sound_params *out)
+fg_result fg_preset_sound(fg_preset preset, fg_sound_config *out)
 {
     if (!out)
         return FG_ERR_NULL;
     if (!known(preset))
         return FG_ERR_ARGUMENT;
-    *out = (fg_sound_params){
+    *out = (fg_sound_config){
         .t0_s = presets[preset].t0_s,
         .r0_m = presets[preset].r0_m,
         .ps0_pa = presets[preset].ps0_pa,
@@ -76,7 +76,7 @@ fg_result fg_preset_from_name(const char *name, fg_preset *out)
     return FG_ERR_ARGUMENT;
 }
 
-fg_result fg_sound_params_check(const fg_sound_params *p)
+fg_result fg_sound_config_check(const fg_sound_config *p)
 {
     if (!p)
         return FG_ERR_NULL;

@@ -10,7 +10,7 @@ static size_t wm_stride(size_t segments)
     return 1;
 }
 
-static void wm_wave(const fg_sound_params *p, fg_event *ev, const fg_ear_path *path, int k)
+static void wm_wave(const fg_sound_config *p, fg_event *ev, const fg_ear_path *path, int k)
 {
     const double *d = path->d;
     double r = path->r_m;

@@ -18,7 +18,7 @@
 
 #include "sound/wmwave_internal.h"
 
-fg_wm_shape fg_wm_shape_at(const fg_sound_params *p, double t0_s, double r_m, double s, double l_m,
+fg_wm_shape fg_wm_shape_at(const fg_sound_config *p, double t0_s, double r_m, double s, double l_m,
                      double c_m_s, double *t_s)
 {
     double r = r_m > p->r0_m ? r_m : p->r0_m;

@@ -28,7 +28,7 @@ typedef struct fg_wm_event {
 /* Shape of a segment of half-length l_m at distance r_m (clamped to r0)
  * with s = sin(theta), for N-wave parameters p and a baseline T0 t0_s. Fills
  * *t_s with the stretched half-duration T. */
-fg_wm_shape fg_wm_shape_at(const fg_sound_params *p, double t0_s, double r_m, double s, double l_m,
+fg_wm_shape fg_wm_shape_at(const fg_sound_config *p, double t0_s, double r_m, double s, double l_m,
                      double c_m_s, double *t_s);
 
 /* The continuous pressure p(tau), pascals (eq. 5, both cases). */
