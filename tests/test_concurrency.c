@@ -74,7 +74,7 @@ static void test_post_while_rendering(void **state)
 {
     (void)state;
     fg_engine_config cfg;
-    fg_engine_config_default(&cfg);
+    assert_int_equal(fg_engine_config_resolve(NULL, &cfg), FG_OK);
     cfg.max_block_frames = BLOCK;
     fg_engine *e;
     assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);

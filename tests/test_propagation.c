@@ -274,6 +274,27 @@ static void abe_model_falls_in_pitch(void **state)
     release(b, 1);
 }
 
+/* The defaults an effect takes once it is on, and only then. */
+static void propagation_resolves_its_defaults(void **state)
+{
+    (void)state;
+    fg_propagation_config used;
+    fg_propagation_config on = {.turbulence_s = 0.002, .absorption = FG_ABSORPTION_ABE_FIR};
+    assert_int_equal(fg_propagation_config_resolve(&on, &used), FG_OK);
+    assert_true(used.turbulence_length_m == FG_TURBULENCE_DEFAULT_LENGTH_M);
+    assert_true(used.abe_fir_distance_m == FG_ABE_FIR_DEFAULT_DISTANCE_M);
+    assert_true(used.turbulence_s == 0.002 && used.absorption == FG_ABSORPTION_ABE_FIR);
+    fg_propagation_config given = {.turbulence_s = 0.001, .turbulence_length_m = 20,
+                                   .absorption = FG_ABSORPTION_ABE_FIR, .abe_fir_distance_m = 300};
+    assert_int_equal(fg_propagation_config_resolve(&given, &used), FG_OK);
+    assert_true(used.turbulence_length_m == 20 && used.abe_fir_distance_m == 300);
+    fg_propagation_config off = {0};
+    assert_int_equal(fg_propagation_config_resolve(&off, &used), FG_OK);
+    assert_true(used.turbulence_length_m == 0 && used.abe_fir_distance_m == 0);
+    assert_int_equal(fg_propagation_config_resolve(NULL, &used), FG_ERR_NULL);
+    assert_int_equal(fg_propagation_config_resolve(&off, NULL), FG_ERR_NULL);
+}
+
 static void bad_propagation_is_refused(void **state)
 {
     (void)state;
@@ -296,6 +317,12 @@ static void bad_propagation_is_refused(void **state)
         fg_result r = fg_engine_post(e, &d, NULL);
         assert_true(r == FG_ERR_ARGUMENT || r == FG_ERR_NOT_FINITE);
     }
+    fg_propagation_config used = {.turbulence_s = 0.5};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        fg_result r = fg_propagation_config_resolve(&bad[i], &used);
+        assert_true(r == FG_ERR_ARGUMENT || r == FG_ERR_NOT_FINITE);
+        assert_true(used.turbulence_s == 0.5); /* untouched */
+    }
     fg_discharge d = {.nodes = rc.nodes, .node_count = 2, .model = (fg_voice_model)9};
     assert_int_equal(fg_preset_sound(FG_PRESET_LIGHTNING, &d.sound), FG_OK);
     assert_int_equal(fg_engine_post(e, &d, NULL), FG_ERR_ARGUMENT);
@@ -315,6 +342,7 @@ int main(void)
         cmocka_unit_test(abe_fir_filters_only_distant_sources),
         cmocka_unit_test(head_shadow_lowers_only_the_far_ear),
         cmocka_unit_test(abe_model_falls_in_pitch),
+        cmocka_unit_test(propagation_resolves_its_defaults),
         cmocka_unit_test(bad_propagation_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -233,7 +233,7 @@ static void test_ten_seconds_armed(void **state)
 {
     (void)state;
     fg_engine_config cfg;
-    fg_engine_config_default(&cfg);
+    assert_int_equal(fg_engine_config_resolve(NULL, &cfg), FG_OK);
     cfg.max_block_frames = BLOCK;
     shared sh = {.stop_result = FG_ERR_ARGUMENT};
     /* the guard sees the statically linked engine's calls: creating allocates */
@@ -328,7 +328,7 @@ static void test_rare_paths_armed(void **state)
 {
     (void)state;
     fg_engine_config cfg;
-    fg_engine_config_default(&cfg);
+    assert_int_equal(fg_engine_config_resolve(NULL, &cfg), FG_OK);
     cfg.max_block_frames = BLOCK;
     fg_engine *e;
     assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);

@@ -296,8 +296,9 @@ static void test_propagation(void **state)
     assert_true(b->ground_reflection == 0);
     assert_int_equal(b->head_shadow, 1);
     assert_int_equal(s.discharges[1].model, FG_MODEL_ABE);
-    assert_int_equal(fg_propagation_config_check(a), FG_OK);
-    assert_int_equal(fg_propagation_config_check(b), FG_OK);
+    fg_propagation_config used;
+    assert_int_equal(fg_propagation_config_resolve(a, &used), FG_OK);
+    assert_int_equal(fg_propagation_config_resolve(b, &used), FG_OK);
     scene_deinit(&s);
 }
 

@@ -222,7 +222,6 @@ static void test_published_offsets(void **state)
 {
     (void)state;
     double t[FG_MAX_STROKES + 1];
-    CHECK(fg_discharge_stroke_offsets(NULL, t, FG_MAX_STROKES) == 0, "NULL discharge");
     fg_discharge d = {.strokes = FG_MAX_STROKES + 1};
     CHECK(fg_discharge_stroke_offsets(&d, t, FG_MAX_STROKES) == 0, "too many strokes");
     d = (fg_discharge){.continuous = 1, .seed = 3};

@@ -96,12 +96,18 @@ typedef struct fg_engine_report {
  * 0, and returns count (1 for a continuous discharge). offsets_s may be NULL
  * to ask for the count. A picture uses this to flash with the sound.
  * [any-thread]
- * Returns 0 when discharge is NULL or strokes > FG_MAX_STROKES. */
+ * Returns 0 when strokes > FG_MAX_STROKES. A NULL discharge is a programmer
+ * error (fulgur/defs.h). */
 FG_API uint32_t fg_discharge_stroke_offsets(const fg_discharge *discharge, double *offsets_s,
                                             uint32_t max);
 
-/* Fills *config with the defaults. [any-thread] */
-FG_API void fg_engine_config_default(fg_engine_config *config);
+/* The configuration fg_engine_create would use for config: every zero
+ * field replaced by its default; config NULL gives all the defaults.
+ * *out is written only on success. [any-thread]
+ * Errors: FG_ERR_NULL out; the others as fg_engine_create's, but for
+ * FG_ERR_NO_MEMORY. */
+FG_API FG_NODISCARD fg_result fg_engine_config_resolve(const fg_engine_config *config,
+                                                       fg_engine_config *out);
 
 /* Creates an engine; every buffer the audio thread will touch is allocated
  * here. config may be NULL (all defaults). *out is owned by the caller until
@@ -127,7 +133,7 @@ FG_API void fg_engine_get_config(const fg_engine *engine, fg_engine_config *out)
  * [sim-thread]
  * Errors: FG_ERR_NULL engine/discharge/nodes; FG_ERR_TREE the tree fails
  * fg_tree_check; FG_ERR_NOT_FINITE / FG_ERR_ARGUMENT a parameter (see
- * fg_sound_config_check and fg_propagation_config_check, strokes > FG_MAX_STROKES,
+ * fg_sound_config_check and fg_propagation_config_resolve, strokes > FG_MAX_STROKES,
  * negative emit time other than FG_EMIT_NOW, continuous with strokes > 1,
  * repeat range outside (0, 10 s] or min > max, unknown model);
  * FG_ERR_CAPACITY more segments than segment_capacity (a ground image
@@ -143,7 +149,8 @@ FG_API FG_NODISCARD fg_result fg_engine_post(fg_engine *engine, const fg_dischar
 FG_API FG_NODISCARD fg_result fg_engine_stop(fg_engine *engine, fg_voice_id id);
 
 /* Reclaims the voices the audio thread has finished; returns how many.
- * [sim-thread] */
+ * [sim-thread] (A NULL engine here and in the getters below is a
+ * programmer error: fulgur/defs.h.) */
 FG_API size_t fg_engine_collect(fg_engine *engine);
 
 /* Writes nframes of every channel into out[channel][0..nframes). Adopts up

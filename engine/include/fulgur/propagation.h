@@ -62,10 +62,14 @@ typedef struct fg_propagation_config {
 #define FG_ABE_FIR_DEFAULT_DISTANCE_M 1000.0
 #define FG_GROUND_DEFAULT_REFLECTION 0.9
 
-/* Checks every field: finite; radius 0 or within the range above;
+/* Checks every field (finite; radius 0 or within the range above;
  * turbulence >= 0 and < 1 s, length >= 0; a known absorption mode; Abe
- * distance >= 0; reflection in [0, 1]. [any-thread]
+ * distance >= 0; reflection in [0, 1]) and writes to *out the values a
+ * discharge posted with *in is rendered with: the parameters of the
+ * effects that are on, with their zeros replaced by the defaults above.
+ * *out is written only on success and may be in. [any-thread]
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT. */
-FG_API FG_NODISCARD fg_result fg_propagation_config_check(const fg_propagation_config *p);
+FG_API FG_NODISCARD fg_result fg_propagation_config_resolve(const fg_propagation_config *in,
+                                                            fg_propagation_config *out);
 
 #endif

@@ -6,37 +6,37 @@
 #include <string.h>
 
 #include "core/engine_internal.h"
+#include "fg_rules.h"
 
 #define MAX_BLOCK_LIMIT 65536u
 #define MAX_VOICES_LIMIT 65536u
 #define SEGMENT_LIMIT (1u << 26)
 #define SETTING_LIMIT 10.0 /* metres of ear spacing, seconds of look-ahead */
 
-void fg_engine_config_default(fg_engine_config *c)
-{
-    if (!c)
-        return;
-    *c = (fg_engine_config){
-        .sample_rate_hz = 48000.0,
-        .max_block_frames = 4096,
-        .channels = 2,
-        .max_voices = 64,
-        .segment_capacity = 131072,
-        .speed_of_sound_m_s = 343.0,
-        .ear_spacing_m = 0.18,
-        .max_lookahead_s = 0.25,
-        .max_adopt_per_block = 8,
-        .air_temperature_k = 293.15,
-        .air_humidity_pct = 70.0,
-        .air_pressure_kpa = 101.325,
-    };
-}
+/* The defaults, as engine.h documents them. */
+static const fg_engine_config defaults = {
+    .sample_rate_hz = 48000.0,
+    .max_block_frames = 4096,
+    .channels = 2,
+    .max_voices = 64,
+    .segment_capacity = 131072,
+    .speed_of_sound_m_s = 343.0,
+    .ear_spacing_m = 0.18,
+    .max_lookahead_s = 0.25,
+    .max_adopt_per_block = 8,
+    .air_temperature_k = 293.15,
+    .air_humidity_pct = 70.0,
+    .air_pressure_kpa = 101.325,
+};
 
-static fg_result resolve_config(const fg_engine_config *in, fg_engine_config *out)
+fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config *out)
 {
-    fg_engine_config_default(out);
-    if (!in)
+    if (!out)
+        return FG_ERR_NULL;
+    if (!in) {
+        *out = defaults;
         return FG_OK;
+    }
     if (!isfinite(in->sample_rate_hz) || !isfinite(in->speed_of_sound_m_s) ||
         !isfinite(in->ear_spacing_m) || !isfinite(in->max_lookahead_s) ||
         !isfinite(in->air_temperature_k) || !isfinite(in->air_humidity_pct) ||
@@ -53,22 +53,20 @@ static fg_result resolve_config(const fg_engine_config *in, fg_engine_config *ou
         in->air_humidity_pct < 0 || in->air_humidity_pct > 100 ||
         (in->air_pressure_kpa != 0 && (in->air_pressure_kpa < 10 || in->air_pressure_kpa > 200)))
         return FG_ERR_ARGUMENT;
-#define TAKE(field) \
-    if (in->field != 0) \
-        out->field = in->field;
-    TAKE(sample_rate_hz)
-    TAKE(max_block_frames)
-    TAKE(channels)
-    TAKE(max_voices)
-    TAKE(segment_capacity)
-    TAKE(speed_of_sound_m_s)
-    TAKE(ear_spacing_m)
-    TAKE(max_lookahead_s)
-    TAKE(max_adopt_per_block)
-    TAKE(air_temperature_k)
-    TAKE(air_humidity_pct)
-    TAKE(air_pressure_kpa)
-#undef TAKE
+    *out = (fg_engine_config){
+        .sample_rate_hz = FG_DEF(in->sample_rate_hz, defaults.sample_rate_hz),
+        .max_block_frames = FG_DEF(in->max_block_frames, defaults.max_block_frames),
+        .channels = FG_DEF(in->channels, defaults.channels),
+        .max_voices = FG_DEF(in->max_voices, defaults.max_voices),
+        .segment_capacity = FG_DEF(in->segment_capacity, defaults.segment_capacity),
+        .speed_of_sound_m_s = FG_DEF(in->speed_of_sound_m_s, defaults.speed_of_sound_m_s),
+        .ear_spacing_m = FG_DEF(in->ear_spacing_m, defaults.ear_spacing_m),
+        .max_lookahead_s = FG_DEF(in->max_lookahead_s, defaults.max_lookahead_s),
+        .max_adopt_per_block = FG_DEF(in->max_adopt_per_block, defaults.max_adopt_per_block),
+        .air_temperature_k = FG_DEF(in->air_temperature_k, defaults.air_temperature_k),
+        .air_humidity_pct = FG_DEF(in->air_humidity_pct, defaults.air_humidity_pct),
+        .air_pressure_kpa = FG_DEF(in->air_pressure_kpa, defaults.air_pressure_kpa),
+    };
     return FG_OK;
 }
 
@@ -104,7 +102,7 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
         return FG_ERR_NULL;
     *out = NULL;
     fg_engine_config cfg;
-    fg_result r = resolve_config(config, &cfg);
+    fg_result r = fg_engine_config_resolve(config, &cfg);
     if (r != FG_OK)
         return r;
     fg_engine *e = calloc(1, sizeof *e);
@@ -170,8 +168,8 @@ void fg_engine_destroy(fg_engine *e)
 
 void fg_engine_get_config(const fg_engine *e, fg_engine_config *out)
 {
-    if (e && out)
-        *out = e->cfg;
+    FG_REQUIRE(e && out);
+    *out = e->cfg;
 }
 
 const fg_engine_config *fg_engine_config_in_use(const fg_engine *e)
@@ -192,15 +190,14 @@ fg_result fg_engine_set_listener(fg_engine *e, const fg_listener *pose)
 
 void fg_engine_get_listener(const fg_engine *e, fg_listener *out)
 {
+    FG_REQUIRE(e && out);
     unsigned serial;
-    if (e && out)
-        fg_listener_cell_read(&e->listener, out, &serial);
+    fg_listener_cell_read(&e->listener, out, &serial);
 }
 
 void fg_engine_get_report(const fg_engine *e, fg_engine_report *out)
 {
-    if (!e || !out)
-        return;
+    FG_REQUIRE(e && out);
     fg_counters *c = (fg_counters *)&e->counters;
 #define LOAD(field) out->field = atomic_load_explicit(&c->field, memory_order_relaxed);
     LOAD(posted)
@@ -218,10 +215,12 @@ void fg_engine_get_report(const fg_engine *e, fg_engine_report *out)
 
 uint64_t fg_engine_frames(const fg_engine *e)
 {
-    return e ? atomic_load_explicit(&((fg_engine *)e)->frames, memory_order_acquire) : 0;
+    FG_REQUIRE_OR(e, 0);
+    return atomic_load_explicit(&((fg_engine *)e)->frames, memory_order_acquire);
 }
 
 double fg_engine_time_s(const fg_engine *e)
 {
-    return e ? (double)fg_engine_frames(e) / e->cfg.sample_rate_hz : 0.0;
+    FG_REQUIRE_OR(e, 0.0);
+    return (double)fg_engine_frames(e) / e->cfg.sample_rate_hz;
 }

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include "core/engine_internal.h"
+#include "fg_rules.h"
 
 static fg_kind_slot *kind_slot(fg_engine *e, const fg_source_kind *kind)
 {
@@ -81,8 +82,7 @@ void *fg_engine_voice_state(fg_engine *e, fg_voice_id id, const fg_source_kind *
 
 size_t fg_engine_collect(fg_engine *e)
 {
-    if (!e)
-        return 0;
+    FG_REQUIRE_OR(e, 0);
     size_t n = 0;
     fg_voice *v;
     while (fg_ring_pop(&e->garbage, &v)) {

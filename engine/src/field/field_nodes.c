@@ -3,11 +3,13 @@
 #include <math.h>
 #include <string.h>
 
+#include "fg_rules.h"
 #include "field/field_internal.h"
 
 size_t fg_field_node_count(const fg_field *f)
 {
-    return f ? f->level[0].count : 0;
+    FG_REQUIRE_OR(f, 0);
+    return f->level[0].count;
 }
 
 fg_result fg_field_get_labels(const fg_field *f, uint8_t *labels)

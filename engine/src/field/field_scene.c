@@ -4,6 +4,7 @@
  * figures measured are in bench/results/field_solve.csv. */
 #include <string.h>
 
+#include "fg_rules.h"
 #include "fulgur/field_scene.h"
 
 #define SPARK_RADIUS_M 0.01
@@ -30,8 +31,7 @@ fg_result fg_field_scene_preset(fg_preset preset, int size, fg_field_scene *out)
     if (!out)
         return FG_ERR_NULL;
     fg_preset_scale scale;
-    if (size == 0)
-        size = FG_FIELD_DEFAULT_SIZE;
+    size = FG_DEF(size, FG_FIELD_DEFAULT_SIZE);
     if (size < FG_FIELD_MIN_SIZE || size > FG_FIELD_MAX_SIZE ||
         fg_preset_get_scale(preset, &scale) != FG_OK)
         return FG_ERR_ARGUMENT;

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "fg_math.h"
+#include "fg_rules.h"
 #include "field/field_internal.h"
 #include "core/fp_env_internal.h"
 
@@ -90,15 +91,19 @@ static double residual_of(fg_field *f)
     return sqrt(fg_dot(f->r, f->r, L->count)) / fg_field_b_norm(f);
 }
 
+/* SOR's optimal factor for the model problem on the largest axis. */
+static double optimal_omega(const fg_level *L)
+{
+    int n = L->n[0] > L->n[1] ? L->n[0] : L->n[1];
+    n = n > L->n[2] ? n : L->n[2];
+    return 2.0 / (1.0 + sin(FG_PI / (n - 1)));
+}
+
 static fg_result sor(fg_field *f, double tol, int max_sweeps, double omega,
                      fg_solve_report *rep)
 {
     const fg_level *L = &f->level[0];
-    if (omega == 0.0) {
-        int n = L->n[0] > L->n[1] ? L->n[0] : L->n[1];
-        n = n > L->n[2] ? n : L->n[2];
-        omega = 2.0 / (1.0 + sin(FG_PI / (n - 1)));
-    }
+    omega = FG_DEF(omega, optimal_omega(L));
     rep->initial_residual = rep->residual = residual_of(f);
     rep->iterations = 0;
     while (rep->residual > tol && rep->iterations < max_sweeps) {
@@ -130,7 +135,7 @@ fg_result fg_field_solve(fg_field *f, const fg_solve_config *config, fg_solve_re
         !(c.tolerance < 1.0) || c.max_iterations < 0 || !(c.sor_omega >= 0.0) ||
         !(c.sor_omega < 2.0))
         return FG_ERR_ARGUMENT;
-    double tol = c.tolerance > 0.0 ? c.tolerance : DEFAULT_TOLERANCE;
+    double tol = FG_DEF(c.tolerance, DEFAULT_TOLERANCE);
     if (c.cold)
         zero_free(f);
     /* Far from the electrodes corrections decay into denormals, which
@@ -138,10 +143,9 @@ fg_result fg_field_solve(fg_field *f, const fg_solve_config *config, fg_solve_re
     fg_fp_env env = fg_fp_env_flush_denormals();
     fg_result r;
     if (c.solver == FG_SOLVER_SOR)
-        r = sor(f, tol, c.max_iterations ? c.max_iterations : DEFAULT_SOR_SWEEPS, c.sor_omega,
-                report);
+        r = sor(f, tol, FG_DEF(c.max_iterations, DEFAULT_SOR_SWEEPS), c.sor_omega, report);
     else
-        r = mgpcg(f, tol, c.max_iterations ? c.max_iterations : DEFAULT_CG_ITERATIONS, report);
+        r = mgpcg(f, tol, FG_DEF(c.max_iterations, DEFAULT_CG_ITERATIONS), report);
     fg_fp_env_restore(env);
     return r;
 }

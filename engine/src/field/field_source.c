@@ -1,10 +1,10 @@
 /* Reading the field: trilinear sampling, the origin sites, and the field
  * source a growth model reads. */
-#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "fg_rules.h"
 #include "field/field_internal.h"
 
 static int finite3(const double *x)
@@ -89,7 +89,8 @@ static fg_result find_origin_sites(fg_field *f)
 
 size_t fg_field_origin_sites(fg_field *f, double *pts, size_t max)
 {
-    if (!f || (!f->sites_valid && find_origin_sites(f) != FG_OK))
+    FG_REQUIRE_OR(f, 0);
+    if (!f->sites_valid && find_origin_sites(f) != FG_OK)
         return 0;
     size_t n = f->site_count < max ? f->site_count : max;
     if (pts)
@@ -114,7 +115,7 @@ static size_t src_origin_sites(void *ctx, double *pts, size_t max)
 
 void fg_field_source_init(fg_field *f, fg_field_source *out)
 {
-    assert(f && out);
+    FG_REQUIRE(f && out);
     double cell = f->h[0];
     if (f->h[1] < cell)
         cell = f->h[1];

@@ -1,19 +1,16 @@
 /* The field's grid: creation with the memory check, and its geometry. */
-#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 
+#include "fg_rules.h"
 #include "field/field_internal.h"
 
-static int size_or_default(int s)
-{
-    return s == 0 ? FG_FIELD_DEFAULT_SIZE : s;
-}
-
+/* The sizes a field of config has, defaults filled in; 0 if one is out of
+ * range. */
 static int sizes(const fg_grid_config *c, int n[3])
 {
     for (int a = 0; a < 3; a++) {
-        n[a] = size_or_default(c->size[a]);
+        n[a] = FG_DEF(c->size[a], FG_FIELD_DEFAULT_SIZE);
         if (n[a] < FG_FIELD_MIN_SIZE || n[a] > FG_FIELD_MAX_SIZE)
             return 0;
     }
@@ -22,8 +19,9 @@ static int sizes(const fg_grid_config *c, int n[3])
 
 size_t fg_field_memory_bytes(const fg_grid_config *config)
 {
+    FG_REQUIRE_OR(config, 0);
     int n[3];
-    if (!config || !sizes(config, n))
+    if (!sizes(config, n))
         return 0;
     size_t count = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
     /* phi, r, z, p, q and the labels */
@@ -43,7 +41,7 @@ fg_result fg_field_create(const fg_grid_config *config, fg_field **out)
     for (int a = 0; a < 3; a++)
         if (!(config->max_m[a] > config->min_m[a]))
             return FG_ERR_ARGUMENT;
-    size_t limit = config->max_bytes ? config->max_bytes : FG_FIELD_DEFAULT_MAX_BYTES;
+    size_t limit = FG_DEF(config->max_bytes, FG_FIELD_DEFAULT_MAX_BYTES);
     if (fg_field_memory_bytes(config) > limit)
         return FG_ERR_CAPACITY;
 
@@ -90,13 +88,13 @@ void fg_field_destroy(fg_field *f)
 
 void fg_field_get_config(const fg_field *f, fg_grid_config *out)
 {
-    assert(f && out);
+    FG_REQUIRE(f && out);
     *out = f->config;
 }
 
 void fg_field_cell(const fg_field *f, double out_m[3])
 {
-    assert(f && out_m);
+    FG_REQUIRE(f && out_m);
     for (int a = 0; a < 3; a++)
         out_m[a] = f->h[a];
 }

@@ -2,6 +2,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fg_rules.h"
 #include "growth/charges_internal.h"
 #include "growth/pick_internal.h"
 #include "growth/tree_internal.h"
@@ -66,18 +67,12 @@ fg_result fg_charges_config_resolve(const fg_charges_config *in, fg_charges_conf
     fg_preset_scale scale;
     if (fg_preset_get_scale(FG_PRESET_LIGHTNING, &scale) != FG_OK)
         return FG_ERR_ARGUMENT;
-    if (p.step_m == 0)
-        p.step_m = 2 * scale.half_step_m; /* a segment is 2 l long */
-    if (p.candidates == 0)
-        p.candidates = DEFAULT_CANDIDATES;
-    if (p.chosen == 0)
-        p.chosen = DEFAULT_CHOSEN;
-    if (p.exclusion_m == 0)
-        p.exclusion_m = DEFAULT_EXCLUSION_STEPS * p.step_m;
-    if (p.max_tips == 0)
-        p.max_tips = DEFAULT_MAX_TIPS;
-    if (p.max_nodes == 0)
-        p.max_nodes = DEFAULT_MAX_NODES;
+    p.step_m = FG_DEF(p.step_m, 2 * scale.half_step_m); /* a segment is 2 l long */
+    p.candidates = FG_DEF(p.candidates, DEFAULT_CANDIDATES);
+    p.chosen = FG_DEF(p.chosen, DEFAULT_CHOSEN);
+    p.exclusion_m = FG_DEF(p.exclusion_m, DEFAULT_EXCLUSION_STEPS * p.step_m);
+    p.max_tips = FG_DEF(p.max_tips, DEFAULT_MAX_TIPS);
+    p.max_nodes = FG_DEF(p.max_nodes, DEFAULT_MAX_NODES);
     if (p.candidates > MAX_CANDIDATES || p.max_tips > MAX_TIPS || p.chosen > p.candidates ||
         p.exclusion_m >= 2 * p.step_m)
         return FG_ERR_ARGUMENT;

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "fg_math.h"
+#include "fg_rules.h"
 #include "growth/growth_internal.h"
 
 #define DEFAULT_GAMMA 2.5
@@ -17,8 +18,10 @@
 #define DEFAULT_GLOBAL_EVERY 8
 #define DEFAULT_RELAX_RADIUS 3
 
-fg_result fg_growth_resolve(const fg_growth_config *in, fg_growth_config *out)
+fg_result fg_growth_config_resolve(const fg_growth_config *in, fg_growth_config *out)
 {
+    if (!in || !out)
+        return FG_ERR_NULL;
     fg_growth_config c = *in;
     if (!isfinite(c.step_m) || !isfinite(c.gamma) || !isfinite(c.cone_rad) ||
         !isfinite(c.branch_probability) || !isfinite(c.branch_length_m) || !isfinite(c.eta))
@@ -29,26 +32,16 @@ fg_result fg_growth_resolve(const fg_growth_config *in, fg_growth_config *out)
         c.branch_length_m < 0.0 || c.max_steps < 0 || c.eta < 0.0 || c.dbm_global_every < 0 ||
         c.dbm_relax_radius < 0)
         return FG_ERR_ARGUMENT;
-    if (c.gamma == 0.0)
-        c.gamma = DEFAULT_GAMMA;
-    if (c.candidates == 0)
-        c.candidates = DEFAULT_CANDIDATES;
-    if (c.cone_rad == 0.0)
-        c.cone_rad = DEFAULT_CONE_RAD;
-    if (c.branch_probability == 0.0)
-        c.branch_probability = DEFAULT_BRANCH_PROBABILITY;
-    if (c.max_tips == 0)
-        c.max_tips = DEFAULT_MAX_TIPS;
-    if (c.branch_length_m == 0.0)
-        c.branch_length_m = DEFAULT_BRANCH_STEPS * c.step_m;
-    if (c.max_steps == 0)
-        c.max_steps = DEFAULT_MAX_STEPS;
-    if (c.eta == 0.0)
-        c.eta = DEFAULT_ETA;
-    if (c.dbm_global_every == 0)
-        c.dbm_global_every = DEFAULT_GLOBAL_EVERY;
-    if (c.dbm_relax_radius == 0)
-        c.dbm_relax_radius = DEFAULT_RELAX_RADIUS;
+    c.gamma = FG_DEF(c.gamma, DEFAULT_GAMMA);
+    c.candidates = FG_DEF(c.candidates, DEFAULT_CANDIDATES);
+    c.cone_rad = FG_DEF(c.cone_rad, DEFAULT_CONE_RAD);
+    c.branch_probability = FG_DEF(c.branch_probability, DEFAULT_BRANCH_PROBABILITY);
+    c.max_tips = FG_DEF(c.max_tips, DEFAULT_MAX_TIPS);
+    c.branch_length_m = FG_DEF(c.branch_length_m, DEFAULT_BRANCH_STEPS * c.step_m);
+    c.max_steps = FG_DEF(c.max_steps, DEFAULT_MAX_STEPS);
+    c.eta = FG_DEF(c.eta, DEFAULT_ETA);
+    c.dbm_global_every = FG_DEF(c.dbm_global_every, DEFAULT_GLOBAL_EVERY);
+    c.dbm_relax_radius = FG_DEF(c.dbm_relax_radius, DEFAULT_RELAX_RADIUS);
     *out = c;
     return FG_OK;
 }

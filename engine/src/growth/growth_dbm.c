@@ -247,7 +247,7 @@ fg_result fg_grow_dbm(fg_field *f, const fg_growth_config *config, fg_tree *out,
     if (!f || !config || !out)
         return FG_ERR_NULL;
     dbm d = {.f = f};
-    fg_result r = fg_growth_resolve(config, &d.c);
+    fg_result r = fg_growth_config_resolve(config, &d.c);
     if (r != FG_OK)
         return r;
     if (f->shape_count == 0)

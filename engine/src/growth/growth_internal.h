@@ -22,9 +22,7 @@ void fg_nodebuf_free(fg_nodebuf *b);
 /* Clears out and copies the nodes into it. */
 fg_result fg_nodebuf_emit(const fg_nodebuf *b, fg_tree *out);
 
-/* growth_choice.c */
-/* Checks config and fills *out with it, defaults in place of zeros. */
-fg_result fg_growth_resolve(const fg_growth_config *config, fg_growth_config *out);
+/* growth_choice.c (and fg_growth_config_resolve, public) */
 /* n unit directions (xyz triples) uniform over the spherical cap of half
  * angle half_rad around the unit vector axis. */
 void fg_cone_directions(fg_rng *rng, const double axis[3], double half_rad, int n, double *dirs);

@@ -204,7 +204,7 @@ fg_result fg_grow_matsuyama(const fg_field_source *src, const fg_growth_config *
     if (!src || !src->sample || !src->classify || !src->origin_sites || !config || !out)
         return FG_ERR_NULL;
     grower g = {.src = src};
-    fg_result r = fg_growth_resolve(config, &g.c);
+    fg_result r = fg_growth_config_resolve(config, &g.c);
     if (r != FG_OK)
         return r;
     fg_rng_seed(&g.rng, g.c.seed);

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "fg_array.h"
+#include "fg_rules.h"
 #include "fulgur/tree.h"
 #include "growth/tree_internal.h"
 
@@ -55,7 +56,8 @@ fg_result fg_tree_check(const fg_node *nodes, size_t count, fg_tree_fault *out)
 
 void fg_tree_fault_describe(const fg_tree_fault *f, char *buf, size_t size)
 {
-    if (!buf || size == 0)
+    FG_REQUIRE(buf || size == 0);
+    if (size == 0)
         return;
     if (!f) {
         snprintf(buf, size, "no fault");
@@ -141,18 +143,20 @@ fg_result fg_tree_add(fg_tree *t, double x, double y, double z, int32_t parent, 
 
 void fg_tree_clear(fg_tree *t)
 {
-    if (t)
-        t->count = 0;
+    FG_REQUIRE(t);
+    t->count = 0;
 }
 
 fg_node *fg_tree_nodes(fg_tree *t)
 {
-    return t ? t->nodes : NULL;
+    FG_REQUIRE_OR(t, NULL);
+    return t->nodes;
 }
 
 size_t fg_tree_count(const fg_tree *t)
 {
-    return t ? t->count : 0;
+    FG_REQUIRE_OR(t, 0);
+    return t->count;
 }
 
 size_t fg_nodes_mark_main(fg_node *nodes, size_t node)

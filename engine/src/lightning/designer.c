@@ -20,11 +20,6 @@ static int is_rebuilt(const fg_thunder_feature *features, const piece *pc)
     return pc->feature >= 0 && features[pc->feature].kind != FG_THUNDER_ROAR;
 }
 
-static double amp(const fg_thunder_feature *b)
-{
-    return b->amplitude > 0 ? b->amplitude : 1.0;
-}
-
 /* Cuts [0, 1] into pieces in order; returns how many. */
 static size_t cut(const fg_thunder_feature *features, size_t count, piece *pieces)
 {
@@ -111,7 +106,7 @@ static fg_result rebuild(const fg_skeleton *in, const fg_thunder_feature *b, con
         fg_vec3 radial = fg_v3_dot(chord, n) < 0 && lambda <= 0.5 * radius ? fg_v3_scale(n, -1) : n;
         fg_vec3 w = fg_v3_sub(chord, fg_v3_scale(radial, fg_v3_dot(chord, radial)));
         w = fg_v3_len(w) > 1e-9 * fg_v3_len(chord) ? fg_v3_unit(w) : fg_v3_perp(radial);
-        double delta = ((1 - amp(b)) * RUMBLE_SPAN_DEG + RUMBLE_MIN_DEG) * FG_PI / 180;
+        double delta = ((1 - fg_thunder_amplitude(b)) * RUMBLE_SPAN_DEG + RUMBLE_MIN_DEG) * FG_PI / 180;
         fg_vec3 dir = fg_v3_add(fg_v3_scale(radial, cos(delta)), fg_v3_scale(w, sin(delta)));
         for (size_t j = 1; j <= samples && r == FG_OK; j++)
             r = fg_skeleton_push(out, fg_v3_add(from, fg_v3_scale(dir, lambda * (double)j /

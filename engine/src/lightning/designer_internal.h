@@ -3,8 +3,15 @@
 #ifndef FULGUR_DESIGNER_INTERNAL_H
 #define FULGUR_DESIGNER_INTERNAL_H
 
+#include "fg_rules.h"
 #include "fulgur/lightning.h"
 #include "lightning/skeleton_internal.h"
+
+/* A feature's shaping strength: its amplitude, 0 meaning 1. */
+static inline double fg_thunder_amplitude(const fg_thunder_feature *f)
+{
+    return FG_DEF(f->amplitude, 1.0);
+}
 
 /* A feature's stretch on the reshaped skeleton. */
 typedef struct fg_stretch {

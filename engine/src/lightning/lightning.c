@@ -121,7 +121,7 @@ static fg_result walk_main(walker *w)
         double s = fg_skeleton_project(k, pos, &hint);
         int b = feature_at(w, s);
         fg_thunder_kind f = b >= 0 ? p->features[b].kind : 0;
-        double a = b >= 0 && p->features[b].amplitude > 0 ? p->features[b].amplitude : 1;
+        double a = b >= 0 ? fg_thunder_amplitude(&p->features[b]) : 1;
         double mean = p->turn_mean_deg * deg * (f == FG_THUNDER_ROAR ? 1 + ROAR_GAIN * a : 1);
         fg_vec3 heading = fg_v3_unit(fg_v3_sub(fg_skeleton_at(k, s + p->lookahead_m), pos));
         dir = turn(w, dir, heading, mean);

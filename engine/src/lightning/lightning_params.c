@@ -2,6 +2,7 @@
  * fulgur/lightning.h). */
 #include <math.h>
 
+#include "fg_rules.h"
 #include "fulgur/lightning.h"
 #include "fulgur/sound.h"
 
@@ -61,12 +62,6 @@ static fg_result check_features(const fg_thunder_feature *b, size_t n)
     return FG_OK;
 }
 
-#define DEFAULT(field, value)  \
-    do {                       \
-        if (p.field == 0)      \
-            p.field = (value); \
-    } while (0)
-
 fg_result fg_lightning_config_resolve(const fg_lightning_config *in, fg_lightning_config *out)
 {
     if (!in || !out)
@@ -88,18 +83,18 @@ fg_result fg_lightning_config_resolve(const fg_lightning_config *in, fg_lightnin
         return r;
     if ((r = check_features(p.features, p.feature_count)) != FG_OK)
         return r;
-    DEFAULT(height_m, DEFAULT_HEIGHT_M);
+    p.height_m = FG_DEF(p.height_m, DEFAULT_HEIGHT_M);
     fg_preset_scale scale;
     if (fg_preset_get_scale(FG_PRESET_LIGHTNING, &scale) != FG_OK)
         return FG_ERR_ARGUMENT;
-    DEFAULT(segment_m, 2 * scale.half_step_m); /* a segment is 2 l long */
-    DEFAULT(turn_mean_deg, DEFAULT_TURN_MEAN_DEG);
-    DEFAULT(max_deviation_deg, DEFAULT_MAX_DEVIATION_DEG);
-    DEFAULT(lookahead_m, DEFAULT_LOOKAHEAD_M);
-    DEFAULT(branch_probability, DEFAULT_BRANCH_PROBABILITY);
-    DEFAULT(branch_length_m, DEFAULT_BRANCH_LENGTH_M);
-    DEFAULT(branch_depth, DEFAULT_BRANCH_DEPTH);
-    DEFAULT(max_nodes, DEFAULT_MAX_NODES);
+    p.segment_m = FG_DEF(p.segment_m, 2 * scale.half_step_m); /* a segment is 2 l long */
+    p.turn_mean_deg = FG_DEF(p.turn_mean_deg, DEFAULT_TURN_MEAN_DEG);
+    p.max_deviation_deg = FG_DEF(p.max_deviation_deg, DEFAULT_MAX_DEVIATION_DEG);
+    p.lookahead_m = FG_DEF(p.lookahead_m, DEFAULT_LOOKAHEAD_M);
+    p.branch_probability = FG_DEF(p.branch_probability, DEFAULT_BRANCH_PROBABILITY);
+    p.branch_length_m = FG_DEF(p.branch_length_m, DEFAULT_BRANCH_LENGTH_M);
+    p.branch_depth = FG_DEF(p.branch_depth, DEFAULT_BRANCH_DEPTH);
+    p.max_nodes = FG_DEF(p.max_nodes, DEFAULT_MAX_NODES);
     *out = p;
     return FG_OK;
 }

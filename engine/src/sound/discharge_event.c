@@ -12,10 +12,8 @@ static unsigned bus_of(const fg_bus_set *buses, const fg_propagation_config *p, 
     switch (p->absorption) {
     case FG_ABSORPTION_ISO9613:
         return fg_bus_for_distance(buses, r);
-    case FG_ABSORPTION_ABE_FIR: {
-        double far = p->abe_fir_distance_m > 0 ? p->abe_fir_distance_m : FG_ABE_FIR_DEFAULT_DISTANCE_M;
-        return r > far ? FG_BUS_FIR : FG_BUS_DRY;
-    }
+    case FG_ABSORPTION_ABE_FIR:
+        return r > p->abe_fir_distance_m ? FG_BUS_FIR : FG_BUS_DRY;
     case FG_ABSORPTION_OFF:
         break;
     }

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "fg_rules.h"
 #include "sound/discharge_internal.h"
 
 #define REPEAT_MIN_DEFAULT_S 0.010
@@ -19,15 +20,16 @@ static const fg_source_ops *const models[] = {
 
 void fg_discharge_repeat_range(const fg_discharge *d, double *min_s, double *max_s)
 {
-    *min_s = d->repeat_min_s > 0 ? d->repeat_min_s : REPEAT_MIN_DEFAULT_S;
-    *max_s = d->repeat_max_s > 0 ? d->repeat_max_s : REPEAT_MAX_DEFAULT_S;
+    *min_s = FG_DEF(d->repeat_min_s, REPEAT_MIN_DEFAULT_S);
+    *max_s = FG_DEF(d->repeat_max_s, REPEAT_MAX_DEFAULT_S);
 }
 
 fg_result fg_discharge_check(const fg_discharge *d)
 {
+    fg_propagation_config propagation;
     fg_result r = fg_sound_config_check(&d->sound);
     if (r == FG_OK)
-        r = fg_propagation_config_check(&d->propagation);
+        r = fg_propagation_config_resolve(&d->propagation, &propagation);
     if (r != FG_OK)
         return r;
     if ((unsigned)d->model >= MODEL_COUNT)

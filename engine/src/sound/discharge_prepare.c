@@ -141,14 +141,14 @@ fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void
     fg_listener_ears(post->pose, cfg->channels, cfg->ear_spacing_m, &ears);
     memcpy(v->post_position, post->pose->position, sizeof v->post_position);
     v->sound = d->sound;
-    v->propagation = d->propagation;
+    fg_result checked = fg_propagation_config_resolve(&d->propagation, &v->propagation);
+    (void)checked; /* fg_engine_post checked it */
 
-    const fg_propagation_config *pr = &d->propagation;
+    const fg_propagation_config *pr = &v->propagation;
     fg_turbulence turbulence = {
         .seed = fg_rng_next(&rng),
         .amplitude_s = pr->turbulence_s,
-        .correlation_m = pr->turbulence_length_m > 0 ? pr->turbulence_length_m
-                                                     : FG_TURBULENCE_DEFAULT_LENGTH_M,
+        .correlation_m = pr->turbulence_length_m,
     };
     /* one source point per stride segments */
     size_t stride = model->stride(n - 1);

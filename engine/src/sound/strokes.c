@@ -1,5 +1,6 @@
 #include <math.h>
 
+#include "fg_rules.h"
 #include "fulgur/engine.h"
 #include "sound/strokes_internal.h"
 
@@ -47,7 +48,8 @@ double fg_strokes_draw_interval_s(fg_rng *rng)
 
 uint32_t fg_discharge_stroke_offsets(const fg_discharge *d, double *offsets_s, uint32_t max)
 {
-    if (!d || d->strokes > FG_MAX_STROKES)
+    FG_REQUIRE_OR(d, 0);
+    if (d->strokes > FG_MAX_STROKES)
         return 0;
     fg_rng rng;
     fg_rng_seed(&rng, d->seed ^ STROKE_STREAM);
