@@ -93,6 +93,16 @@ void fg_tree_fault_describe(const fg_tree_fault *f, char *buf, size_t size)
     }
 }
 
+void fg_tree_translate(fg_node *nodes, size_t count, const double offset_m[3])
+{
+    FG_REQUIRE((nodes || count == 0) && offset_m);
+    for (size_t i = 0; i < count; i++) {
+        nodes[i].x += offset_m[0];
+        nodes[i].y += offset_m[1];
+        nodes[i].z += offset_m[2];
+    }
+}
+
 fg_result fg_tree_create(size_t capacity_hint, fg_tree **out)
 {
     if (!out)
