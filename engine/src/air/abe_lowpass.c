@@ -1,7 +1,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "air/abe_lowpass_internal.h"
+#include "abe_lowpass_internal.h"
 #include "fg_math.h"
 
 #define MASK (FG_ABE_FIR_HISTORY - 1)

@@ -2,7 +2,7 @@
 #include <stdbool.h>
 #include <string.h>
 
-#include "air/absorb_filter_internal.h"
+#include "absorb_filter_internal.h"
 #include "fg_math.h"
 
 #define NP (4 * FG_IIR_MAX_SECTIONS) /* u1, u2 for numerator and denominator */

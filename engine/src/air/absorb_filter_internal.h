@@ -21,8 +21,8 @@
 #ifndef FULGUR_ABSORB_FILTER_INTERNAL_H
 #define FULGUR_ABSORB_FILTER_INTERNAL_H
 
-#include "air/air_absorption_internal.h"
-#include "air/iir_internal.h"
+#include "air_absorption_internal.h"
+#include "iir_internal.h"
 
 #define FG_ABSORB_FLOOR_DB (-60.0)
 #define FG_ABSORB_LO_HZ 20.0

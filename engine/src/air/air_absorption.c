@@ -1,6 +1,6 @@
 #include <math.h>
 
-#include "air/air_absorption_internal.h"
+#include "air_absorption_internal.h"
 
 #define T0_K 293.15   /* reference air temperature */
 #define T01_K 273.16  /* triple-point isotherm */

@@ -1,6 +1,6 @@
 #include <math.h>
 
-#include "air/distance_bands_internal.h"
+#include "distance_bands_internal.h"
 
 fg_result fg_band_plan_init(fg_band_plan *plan, double near_m, double far_m, unsigned count)
 {

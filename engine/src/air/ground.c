@@ -1,4 +1,4 @@
-#include "air/ground_internal.h"
+#include "ground_internal.h"
 
 void fg_ground_mirror(const double p[3], double out[3])
 {

@@ -1,7 +1,7 @@
 #include <math.h>
 
 #include "fg_math.h"
-#include "air/head_shadow_internal.h"
+#include "head_shadow_internal.h"
 
 double fg_head_shadow_db(const double ear_axis[3], const double to_source[3])
 {

@@ -18,7 +18,7 @@
 #ifndef FULGUR_HEAD_SHADOW_INTERNAL_H
 #define FULGUR_HEAD_SHADOW_INTERNAL_H
 
-#include "air/iir_internal.h"
+#include "iir_internal.h"
 
 #define FG_HEAD_SHADOW_DB (-10.0)
 #define FG_HEAD_RADIUS_M 0.0875

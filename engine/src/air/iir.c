@@ -1,6 +1,6 @@
 #include <math.h>
 
-#include "air/iir_internal.h"
+#include "iir_internal.h"
 
 #define SNAP 1e-30
 

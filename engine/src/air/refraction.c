@@ -1,7 +1,7 @@
 #include <math.h>
 
 #include "fg_math.h"
-#include "air/refraction_internal.h"
+#include "refraction_internal.h"
 
 static int straight(double radius_m)
 {

@@ -1,7 +1,7 @@
 #include <math.h>
 
 #include "fg_rng.h"
-#include "air/turbulence_internal.h"
+#include "turbulence_internal.h"
 
 static double lattice(uint64_t seed, int64_t i, int64_t j, int64_t k)
 {

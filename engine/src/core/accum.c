@@ -1,7 +1,7 @@
 /* The difference-domain accumulator (core/accum_internal.h). */
 #include <string.h>
 
-#include "core/accum_internal.h"
+#include "accum_internal.h"
 
 void fg_accum_begin(fg_accum *b, double *d3, size_t n)
 {

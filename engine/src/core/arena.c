@@ -1,7 +1,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/arena_internal.h"
+#include "arena_internal.h"
 
 bool fg_arena_init(fg_arena *a, size_t capacity, size_t max_allocations)
 {

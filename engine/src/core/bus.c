@@ -1,7 +1,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/bus_internal.h"
+#include "bus_internal.h"
 #include "air/head_shadow_internal.h"
 #include "air/absorb_filter_internal.h"
 

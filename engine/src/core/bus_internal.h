@@ -17,7 +17,7 @@
 #include "air/distance_bands_internal.h"
 #include "fulgur/propagation.h"
 #include "air/iir_internal.h"
-#include "core/accum_internal.h"
+#include "accum_internal.h"
 
 enum {
     FG_BUS_DRY = 0,

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/engine_internal.h"
+#include "engine_internal.h"
 #include "fg_rules.h"
 
 #define MAX_BLOCK_LIMIT 65536u

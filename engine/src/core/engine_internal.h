@@ -7,10 +7,10 @@
 #include <stdatomic.h>
 #include <stdint.h>
 
-#include "core/bus_internal.h"
-#include "core/listener_internal.h"
-#include "core/source_internal.h"
-#include "core/voice_internal.h"
+#include "bus_internal.h"
+#include "listener_internal.h"
+#include "source_internal.h"
+#include "voice_internal.h"
 #include "fg_ring.h"
 #include "fulgur/engine.h"
 

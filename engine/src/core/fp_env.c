@@ -1,4 +1,4 @@
-#include "core/fp_env_internal.h"
+#include "fp_env_internal.h"
 
 #if defined(__SSE2__)
 #include <xmmintrin.h>

@@ -2,7 +2,7 @@
 #include <string.h>
 
 #include "fg_vec3.h"
-#include "core/listener_internal.h"
+#include "listener_internal.h"
 
 static void pack(const fg_listener *p, uint64_t w[FG_POSE_WORDS])
 {

@@ -2,7 +2,7 @@
  * the audio thread, stopping it, and reclaiming the finished. */
 #include <stdlib.h>
 
-#include "core/engine_internal.h"
+#include "engine_internal.h"
 #include "fg_rules.h"
 
 static fg_kind_slot *kind_slot(fg_engine *e, const fg_source_kind *kind)

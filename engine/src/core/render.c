@@ -5,8 +5,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/engine_internal.h"
-#include "core/fp_env_internal.h"
+#include "engine_internal.h"
+#include "fp_env_internal.h"
 
 static double now_s(void)
 {

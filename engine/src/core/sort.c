@@ -1,6 +1,6 @@
 #include <string.h>
 
-#include "core/sort_internal.h"
+#include "sort_internal.h"
 
 #define DIGIT_BITS 11
 #define BUCKETS (1u << DIGIT_BITS)

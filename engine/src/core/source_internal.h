@@ -37,8 +37,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "core/bus_internal.h"
-#include "core/listener_internal.h"
+#include "bus_internal.h"
+#include "listener_internal.h"
 #include "fulgur/engine.h"
 
 /* What the audio thread reports, as atomic counters other threads read. */

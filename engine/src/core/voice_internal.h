@@ -10,7 +10,7 @@
 #include <stdatomic.h>
 #include <stdint.h>
 
-#include "core/source_internal.h"
+#include "source_internal.h"
 
 typedef struct fg_voice {
     const fg_source_ops *ops;  /* its model: set by the post */

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "field/field_internal.h"
+#include "field_internal.h"
 
 static int finite3(const double *x)
 {

@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "fg_rules.h"
-#include "field/field_internal.h"
+#include "field_internal.h"
 
 size_t fg_field_node_count(const fg_field *f)
 {

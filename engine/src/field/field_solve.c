@@ -12,7 +12,7 @@
 
 #include "fg_math.h"
 #include "fg_rules.h"
-#include "field/field_internal.h"
+#include "field_internal.h"
 #include "core/fp_env_internal.h"
 
 #define DEFAULT_TOLERANCE 1e-5

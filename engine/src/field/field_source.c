@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "fg_rules.h"
-#include "field/field_internal.h"
+#include "field_internal.h"
 
 static int finite3(const double *x)
 {

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 
 #include "fg_rules.h"
-#include "field/field_internal.h"
+#include "field_internal.h"
 
 /* The sizes a field of config has, defaults filled in; 0 if one is out of
  * range. */

@@ -5,7 +5,7 @@
  * (a quarter on an edge of the box): that is what makes the box faces
  * Neumann and keeps A symmetric. Masked (Dirichlet) neighbours contribute
  * their value in x: phi for the potential, 0 for a correction. */
-#include "field/field_internal.h"
+#include "field_internal.h"
 
 static inline double face(int i, int n)
 {

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "field/field_internal.h"
+#include "field_internal.h"
 
 #define COARSEST_SWEEPS 16
 

@@ -3,9 +3,9 @@
 #include <string.h>
 
 #include "fg_rules.h"
-#include "growth/charges_internal.h"
-#include "growth/pick_internal.h"
-#include "growth/tree_internal.h"
+#include "charges_internal.h"
+#include "pick_internal.h"
+#include "tree_internal.h"
 #include "fulgur/sound.h"
 
 #define DEFAULT_CANDIDATES 8

@@ -5,7 +5,7 @@
 
 #include "fg_math.h"
 #include "fg_rules.h"
-#include "growth/growth_internal.h"
+#include "growth_internal.h"
 
 #define DEFAULT_GAMMA 2.5
 #define DEFAULT_CANDIDATES 8

@@ -4,7 +4,7 @@
 
 #include "fg_array.h"
 #include "field/field_internal.h"
-#include "growth/growth_internal.h"
+#include "growth_internal.h"
 
 /* Global cycles are this many CG iterations, warm. */
 #define GLOBAL_ITERATIONS 2

@@ -7,9 +7,9 @@
 #include <stdint.h>
 
 #include "fulgur/growth.h"
-#include "growth/pick_internal.h"
+#include "pick_internal.h"
 #include "fg_rng.h"
-#include "growth/tree_internal.h"
+#include "tree_internal.h"
 
 typedef struct fg_nodebuf {
     fg_node *v;

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 
 #include "fg_math.h"
-#include "growth/growth_internal.h"
+#include "growth_internal.h"
 
 #define BLOCKED_LIMIT 5
 #define SURFACE_BISECTIONS 8

@@ -2,7 +2,7 @@
 #include <stdlib.h>
 
 #include "fg_array.h"
-#include "growth/growth_internal.h"
+#include "growth_internal.h"
 
 fg_result fg_nodebuf_push(fg_nodebuf *b, const double x[3], int32_t parent, size_t *index)
 {

@@ -1,4 +1,4 @@
-#include "growth/pick_internal.h"
+#include "pick_internal.h"
 
 int fg_pick(const double *w, int n, double u)
 {

@@ -6,7 +6,7 @@
 #include "fg_array.h"
 #include "fg_rules.h"
 #include "fulgur/tree.h"
-#include "growth/tree_internal.h"
+#include "tree_internal.h"
 
 struct fg_tree {
     fg_node *nodes;

@@ -3,7 +3,7 @@
  * channel is; runs of the other pieces keep the original shape, sheared
  * linearly along their length so that they join the rebuilt ones and still
  * end at the strike point. */
-#include "lightning/designer_internal.h"
+#include "designer_internal.h"
 
 /* Spacing of the points that sample an arc or a line. */
 #define SAMPLE_M 10.0

@@ -5,7 +5,7 @@
 
 #include "fg_rules.h"
 #include "fulgur/lightning.h"
-#include "lightning/skeleton_internal.h"
+#include "skeleton_internal.h"
 
 /* A feature's shaping strength: its amplitude, 0 meaning 1. */
 static inline double fg_thunder_amplitude(const fg_thunder_feature *f)

@@ -2,7 +2,7 @@
  * and the designer features' effect on the walk (rules in fulgur/lightning.h). */
 #include <stdlib.h>
 
-#include "lightning/designer_internal.h"
+#include "designer_internal.h"
 #include "fg_array.h"
 
 #define BRANCH_ANGLE_MIN_DEG 20.0

@@ -2,7 +2,7 @@
 #include <stdlib.h>
 
 #include "fg_array.h"
-#include "lightning/skeleton_internal.h"
+#include "skeleton_internal.h"
 
 #define PROJECT_WINDOW 16
 #define RANDOM_PIECES 8

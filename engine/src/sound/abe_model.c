@@ -1,7 +1,7 @@
 /* Abe et al.'s model: a harmonic-series N-wave per source point, one point
  * per stride segments, rendered sample by sample into the buses' float
  * buffers. */
-#include "sound/discharge_schedule.h"
+#include "discharge_schedule.h"
 
 /* Source points per discharge at most, evenly along the tree. */
 #define MAX_SOURCES 512

@@ -1,6 +1,6 @@
 #include <math.h>
 
-#include "sound/abe_voice_internal.h"
+#include "abe_voice_internal.h"
 #include "fg_math.h"
 
 #define SIXTY_DB 6.907755278982137 /* ln 1000 */

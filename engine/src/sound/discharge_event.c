@@ -5,7 +5,7 @@
 
 #include "air/head_shadow_internal.h"
 #include "air/refraction_internal.h"
-#include "sound/discharge_internal.h"
+#include "discharge_internal.h"
 
 static unsigned bus_of(const fg_bus_set *buses, const fg_propagation_config *p, double r)
 {

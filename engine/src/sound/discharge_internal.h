@@ -24,8 +24,8 @@
 #include "core/source_internal.h"
 #include "fg_rng.h"
 #include "fulgur/engine.h"
-#include "sound/abe_voice_internal.h"
-#include "sound/wmwave_internal.h"
+#include "abe_voice_internal.h"
+#include "wmwave_internal.h"
 
 /* Overlapping emissions of one voice: strokes, or repeats of a continuous
  * discharge whose sound outlasts the interval. */

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "fg_rules.h"
-#include "sound/discharge_internal.h"
+#include "discharge_internal.h"
 
 #define REPEAT_MIN_DEFAULT_S 0.010
 #define REPEAT_MAX_DEFAULT_S 0.050

@@ -7,8 +7,8 @@
 
 #include "air/ground_internal.h"
 #include "air/turbulence_internal.h"
-#include "sound/discharge_internal.h"
-#include "sound/strokes_internal.h"
+#include "discharge_internal.h"
+#include "strokes_internal.h"
 
 static double distance(const fg_node *a, const fg_node *b)
 {

@@ -3,7 +3,7 @@
  * instances themselves are played by discharge_schedule.h. */
 #include <math.h>
 
-#include "sound/discharge_schedule.h"
+#include "discharge_schedule.h"
 
 void fg_discharge_adopt(void *voice, const fg_block_context *block)
 {

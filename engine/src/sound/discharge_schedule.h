@@ -15,7 +15,7 @@
 #ifndef FULGUR_DISCHARGE_SCHEDULE_H
 #define FULGUR_DISCHARGE_SCHEDULE_H
 
-#include "sound/discharge_internal.h"
+#include "discharge_internal.h"
 
 /* Adds ear play->ch of ev to the buses (fg_discharge_model's add). */
 typedef fg_wave_status (*fg_discharge_add_fn)(const fg_event *ev, const fg_event_play *play,

@@ -2,7 +2,7 @@
 
 #include "fg_rules.h"
 #include "fulgur/engine.h"
-#include "sound/strokes_internal.h"
+#include "strokes_internal.h"
 
 static double logseries_weight(uint32_t k)
 {

@@ -2,7 +2,7 @@
  * buses' difference-domain accumulators. */
 #include <math.h>
 
-#include "sound/discharge_schedule.h"
+#include "discharge_schedule.h"
 
 static size_t wm_stride(size_t segments)
 {

@@ -16,7 +16,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "sound/wmwave_internal.h"
+#include "wmwave_internal.h"
 
 fg_wm_shape fg_wm_shape_at(const fg_sound_config *p, double t0_s, double r_m, double s, double l_m,
                      double c_m_s, double *t_s)
