@@ -222,10 +222,10 @@ static fg_result grow(grower *g)
     return FG_OK;
 }
 
-fg_result fg_charges_grow(const fg_charges_config *params, fg_tree *out)
+fg_result fg_charges_grow(const fg_charges_config *config, fg_tree *out)
 {
     fg_charges_config p;
-    fg_result r = fg_charges_config_resolve(params, &p);
+    fg_result r = fg_charges_config_resolve(config, &p);
     if (r != FG_OK)
         return r;
     if (!out)

@@ -162,29 +162,29 @@ static fg_result grow_branch(walker *w, spawn sp)
     return FG_OK;
 }
 
-static void fill_info(const walker *w, size_t main_nodes, fg_lightning_report *info)
+static void fill_report(const walker *w, size_t main_nodes, fg_lightning_report *report)
 {
     const fg_node *nodes = fg_tree_nodes(w->tree);
-    *info = (fg_lightning_report){.main_nodes = main_nodes,
-                                .segments = fg_tree_count(w->tree) - 1,
-                                .skeleton_length_m = fg_skeleton_length(w->skel)};
+    *report = (fg_lightning_report){.main_nodes = main_nodes,
+                                    .segments = fg_tree_count(w->tree) - 1,
+                                    .skeleton_length_m = fg_skeleton_length(w->skel)};
     for (size_t i = 0; i < w->p->feature_count; i++) {
-        info->features[i].distance_m = w->stretches[i].radius_m;
-        info->features[i].first_node = main_nodes; /* none yet */
+        report->features[i].distance_m = w->stretches[i].radius_m;
+        report->features[i].first_node = main_nodes; /* none yet */
     }
     size_t hint = 0;
     for (size_t i = 0; i < main_nodes; i++) {
         fg_vec3 q = fg_v3(nodes[i].x, nodes[i].y, nodes[i].z);
         if (i > 0) {
             const fg_node *a = &nodes[i - 1];
-            info->main_length_m += fg_v3_len(fg_v3_sub(q, fg_v3(a->x, a->y, a->z)));
+            report->main_length_m += fg_v3_len(fg_v3_sub(q, fg_v3(a->x, a->y, a->z)));
         }
         int b = feature_at(w, fg_skeleton_project(w->skel, q, &hint));
         if (b < 0)
             continue;
-        if (info->features[b].first_node == main_nodes)
-            info->features[b].first_node = i;
-        info->features[b].last_node = i;
+        if (report->features[b].first_node == main_nodes)
+            report->features[b].first_node = i;
+        report->features[b].last_node = i;
     }
 }
 
@@ -213,11 +213,11 @@ static fg_result build(walker *w, fg_skeleton *base, fg_skeleton *shaped, fg_str
     return r;
 }
 
-fg_result fg_lightning_generate(const fg_lightning_config *params, fg_tree *out,
-                                fg_lightning_report *info)
+fg_result fg_lightning_generate(const fg_lightning_config *config, fg_tree *out,
+                                fg_lightning_report *report)
 {
     fg_lightning_config p;
-    fg_result r = fg_lightning_config_resolve(params, &p);
+    fg_result r = fg_lightning_config_resolve(config, &p);
     if (r != FG_OK)
         return r;
     if (!out)
@@ -229,12 +229,12 @@ fg_result fg_lightning_generate(const fg_lightning_config *params, fg_tree *out,
     fg_skeleton base = {0}, shaped = {0};
     fg_stretch stretches[FG_THUNDER_MAX_FEATURES] = {{0}};
     r = build(&w, &base, &shaped, stretches);
-    if (r == FG_OK && info) {
+    if (r == FG_OK && report) {
         size_t main_nodes = 0;
         while (main_nodes < fg_tree_count(out) &&
                (fg_tree_nodes(out)[main_nodes].flags & FG_NODE_MAIN))
             main_nodes++;
-        fill_info(&w, main_nodes, info);
+        fill_report(&w, main_nodes, report);
     }
     free(w.spawns);
     fg_skeleton_free(&base);
