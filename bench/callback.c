@@ -44,21 +44,14 @@ static void make_bolt(fg_node *nodes, int k)
 {
     synth_tree(nodes, BOLT_SEGMENTS, 5000.0, 3.0, (uint64_t)k + 11);
     double a = 2.399963 * k, d = 2000.0 + 1000.0 * fmod(0.618034 * k, 1.0);
-    for (size_t i = 0; i <= BOLT_SEGMENTS; i++) {
-        nodes[i].x += d * cos(a);
-        nodes[i].y += d * sin(a);
-    }
+    fg_tree_translate(nodes, BOLT_SEGMENTS + 1, (double[]){d * cos(a), d * sin(a), 0.0});
 }
 
 static void make_spark(fg_node *nodes, int k)
 {
     synth_tree(nodes, SPARK_SEGMENTS, 0.02, 0.002, (uint64_t)k + 1000);
     double a = 1.3 * k;
-    for (size_t i = 0; i <= SPARK_SEGMENTS; i++) {
-        nodes[i].x += 1.5 * cos(a);
-        nodes[i].y += 1.5 * sin(a);
-        nodes[i].z += 1.0;
-    }
+    fg_tree_translate(nodes, SPARK_SEGMENTS + 1, (double[]){1.5 * cos(a), 1.5 * sin(a), 1.0});
 }
 
 static timing run(const load *L, fg_node *tree)

@@ -16,13 +16,14 @@
 #include <string.h>
 
 #include "bench_util.h"
+#include "fg_array.h"
+#include "fg_math.h"
 #include "fulgur/fulgur.h"
 
 #define FS 48000.0
 #define C 343.0
 #define WINDOW 16384
 #define TABLE2_SEEDS 8
-#define PI 3.14159265358979323846
 
 typedef struct signal {
     float *x;
@@ -63,10 +64,12 @@ static signal render(const fg_node *nodes, size_t count, const fg_sound_config *
     size_t cap = 0;
     fg_engine_report st = {0};
     while (st.finished == 0) {
-        if (s.n + 1024 > cap) {
-            cap = cap ? 2 * cap : 1 << 20;
-            s.x = realloc(s.x, cap * sizeof *s.x);
+        float *grown = fg_array_grow(s.x, &cap, s.n + 1024, sizeof *s.x, 1 << 20);
+        if (!grown) {
+            fprintf(stderr, "validate: out of memory\n");
+            exit(1);
         }
+        s.x = grown;
         float *plane = s.x + s.n;
         must(fg_engine_render(e, &plane, 1024), "render");
         s.n += 1024;
@@ -96,7 +99,7 @@ static void spectrum(const signal *s, double *psd)
     size_t frames = 0;
     for (size_t at = 0; at + WINDOW <= s->n; at += WINDOW / 2, frames++) {
         for (int k = 0; k < WINDOW; k++)
-            in[k] = s->x[at + k] * (0.5 - 0.5 * cos(2 * PI * k / WINDOW));
+            in[k] = s->x[at + k] * (0.5 - 0.5 * cos(2 * FG_PI * k / WINDOW));
         fftw_execute(plan);
         for (int k = 0; k <= WINDOW / 2; k++)
             psd[k] += creal(out[k]) * creal(out[k]) + cimag(out[k]) * cimag(out[k]);

@@ -7,9 +7,10 @@
 
 #include <cmocka.h>
 
+#include "fg_math.h"
 #include "fulgur/lightning.h"
 
-#define DEG (3.14159265358979323846 / 180)
+#define DEG (FG_PI / 180)
 
 /* A straight vertical 5 km skeleton over the origin. */
 static const double vertical[] = {0, 0, 5000, 0, 0, 0};
@@ -140,7 +141,7 @@ static void segment_and_turn_statistics(void **state)
     double mean = sum / turns, rms = sqrt(sum2 / turns);
     /* half-normal of mean m: rms = m sqrt(pi / 2); standard error ~0.1 deg */
     assert_float_equal(mean / DEG, 12.0, 0.5);
-    assert_float_equal(rms / DEG, 12.0 * sqrt(3.14159265358979 / 2), 0.6);
+    assert_float_equal(rms / DEG, 12.0 * sqrt(FG_PI / 2), 0.6);
     /* tortuous, yet it follows the skeleton */
     assert_true(max_off > 5 && max_off < 150);
 }

@@ -12,11 +12,11 @@
 #include <math.h>
 #include <string.h>
 
+#include "fg_math.h"
 #include "fg_rng.h"
 #include "sound/wmwave_internal.h"
 #include "wm_reference.h"
 
-#define PI 3.14159265358979323846
 #define C_M_S 343.0
 #define FS_HZ 48000.0
 
@@ -112,7 +112,7 @@ static void test_against_point_sources(void **state)
             s = psi * (1.0 + pc->boundary_rel);
             theta = asin(s);
         } else {
-            theta = pc->theta_deg * PI / 180.0;
+            theta = pc->theta_deg * FG_PI / 180.0;
             s = fabs(sin(theta));
         }
         /* far field: r = 10^4 l makes the wavefront curvature over the
