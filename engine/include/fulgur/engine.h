@@ -155,8 +155,9 @@ FG_API size_t fg_engine_collect(fg_engine *engine);
 
 /* Writes nframes of every channel into out[channel][0..nframes). Adopts up
  * to max_adopt_per_block posted voices, reads the latest listener pose,
- * evaluates every WM-wave overlapping the block for each ear, and retires
- * finished voices. Each sample is the exact average of the continuous
+ * renders every sounding voice through its model (a discharge: every wave
+ * overlapping the block, for each ear), and retires finished voices. With
+ * the WM-wave model each sample is the exact average of the continuous
  * pressure over its sample interval.
  * Moving listener: geometry follows the pose read at the start of each
  * block. An event joins the block loop when its waveform could start before
