@@ -113,17 +113,18 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
     e->free_slots = calloc(cfg.max_voices, sizeof *e->free_slots);
     e->live = calloc(cfg.max_voices, 1);
     e->active = calloc(cfg.max_voices, sizeof *e->active);
-    bool ok = e->voices && e->free_slots && e->live && e->active;
-    ok = ok && fg_ring_init(&e->inbox, cfg.max_voices, sizeof(fg_voice *));
-    ok = ok && fg_ring_init(&e->garbage, cfg.max_voices, sizeof(fg_voice *));
-    fg_air air = {cfg.air_temperature_k - 273.15, cfg.air_humidity_pct, cfg.air_pressure_kpa};
-    r = ok ? fg_bus_set_init(&e->buses, cfg.channels, cfg.max_block_frames, cfg.sample_rate_hz,
-                             cfg.speed_of_sound_m_s, &air)
-           : FG_ERR_NO_MEMORY;
+    r = e->voices && e->free_slots && e->live && e->active ? FG_OK : FG_ERR_NO_MEMORY;
     for (size_t i = 0; i < fg_builtin_kind_count && r == FG_OK; i++)
         r = add_kind(e, fg_builtin_kinds[i]);
     for (size_t i = 0; i < count && r == FG_OK; i++)
         r = kinds[i] ? add_kind(e, kinds[i]) : FG_ERR_NULL;
+    bool ok = r == FG_OK && fg_ring_init(&e->inbox, cfg.max_voices, sizeof(fg_voice *));
+    ok = ok && fg_ring_init(&e->garbage, cfg.max_voices, sizeof(fg_voice *));
+    fg_air air = {cfg.air_temperature_k - 273.15, cfg.air_humidity_pct, cfg.air_pressure_kpa};
+    if (r == FG_OK)
+        r = ok ? fg_bus_set_init(&e->buses, cfg.channels, cfg.max_block_frames,
+                                 cfg.sample_rate_hz, cfg.speed_of_sound_m_s, &air)
+               : FG_ERR_NO_MEMORY;
     if (r != FG_OK) {
         fg_engine_destroy(e);
         return r;
@@ -151,14 +152,14 @@ void fg_engine_destroy(fg_engine *e)
 {
     if (!e)
         return;
+    fg_ring_deinit(&e->inbox);
+    fg_ring_deinit(&e->garbage);
+    fg_bus_set_deinit(&e->buses);
     for (size_t i = 0; i < e->kind_count; i++) {
         if (e->kinds[i].kind->destroy)
             e->kinds[i].kind->destroy(e->kinds[i].storage);
         free(e->kinds[i].pool);
     }
-    fg_ring_deinit(&e->inbox);
-    fg_ring_deinit(&e->garbage);
-    fg_bus_set_deinit(&e->buses);
     free(e->active);
     free(e->live);
     free(e->free_slots);
