@@ -1,12 +1,16 @@
 # Writes OUTPUT_C and OUTPUT_H holding each GLSL file of SHADERS (a
-# ;-list) as a C string named fgg_shader_<file name without extension>.
+# ;-list) as a C string named fgg_shader_<folder>_<file name without
+# extension>: gpu/shaders/field/dot.glsl is fgg_shader_field_dot.
 # Run as a script: cmake -DSHADERS=... -DOUTPUT_C=... -DOUTPUT_H=... -P
 # SHADERS may also be |-separated (a ;-list does not survive a COMMAND line).
 string(REPLACE "|" ";" SHADERS "${SHADERS}")
 set(c "/* Generated from gpu/shaders by cmake/EmbedShaders.cmake. */\n#include \"gpu_shaders.h\"\n")
 set(h "/* Generated from gpu/shaders by cmake/EmbedShaders.cmake. */\n#ifndef FULGUR_GPU_SHADERS_H\n#define FULGUR_GPU_SHADERS_H\n")
 foreach(file IN LISTS SHADERS)
+  get_filename_component(dir "${file}" DIRECTORY)
+  get_filename_component(folder "${dir}" NAME)
   get_filename_component(name "${file}" NAME_WE)
+  set(name "${folder}_${name}")
   file(READ "${file}" text)
   string(REPLACE "\\" "\\\\" text "${text}")
   string(REPLACE "\"" "\\\"" text "${text}")

@@ -9,7 +9,7 @@
 
 #include <cmocka.h>
 
-#include "generator_field.h"
+#include "scene/generator_field.h"
 
 static const gen_context ctx = {.seed = 11, .listener_m = {0, -1, 0}};
 

@@ -8,7 +8,7 @@
 
 #include <cmocka.h>
 
-#include "generator_lightning.h"
+#include "scene/generator_lightning.h"
 
 static const gen_context ctx = {.seed = 11, .listener_m = {100, 50, 1.7}};
 

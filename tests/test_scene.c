@@ -10,8 +10,8 @@
 
 #include <cmocka.h>
 
-#include "generator.h"
-#include "scene.h"
+#include "scene/generator.h"
+#include "scene/scene.h"
 
 #define SQRT_HALF 0.70710678118654752
 #define TREE "\"tree\":{\"nodes\":[[0,0,0,-1],[0,0,0.01,0]]}"

@@ -9,9 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/temp_file.h"
 #include "lilv_host.h"
 #include "smf.h"
-#include "temp_file.h"
 
 #define BLOCK 256
 

@@ -10,10 +10,10 @@
 #include <string.h>
 #include <time.h>
 
-#include "audio_file.h"
-#include "commands.h"
-#include "scene.h"
-#include "temp_file.h"
+#include "common/audio_file.h"
+#include "common/commands.h"
+#include "common/temp_file.h"
+#include "scene/scene.h"
 #ifdef FULGUR_HAVE_GPU
 #include "render_picture.h"
 #endif

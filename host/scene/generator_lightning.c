@@ -7,7 +7,7 @@
 #include "fulgur/charges.h"
 #include "fulgur/lightning.h"
 #include "generator_lightning.h"
-#include "json_field.h"
+#include "json_read.h"
 
 static const json_range positive = {0, 1e7, true, false, false};
 static const json_range non_negative = {0, 1e7, false, false, false};

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "commands.h"
+#include "common/commands.h"
 #include "run_clock.h"
 
 /* Allocates what the threads use; the engine last. */

@@ -6,10 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "commands.h"
+#include "common/commands.h"
+#include "common/temp_file.h"
 #include "envelope.h"
 #include "spectrogram.h"
-#include "temp_file.h"
 
 #define ENVELOPE_POINTS 2000
 #define P_REF_PA 20e-6

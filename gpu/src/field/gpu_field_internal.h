@@ -7,7 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "gpu_internal.h"
+#include "context/gpu_internal.h"
 
 #define FGG_MAX_LEVELS 8
 

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "run_clock.h"
+#include "run/run_clock.h"
 #include "view.h"
 
 static int grow_charges(const view_request *q, fg_tree *tree, char *err, size_t err_size)

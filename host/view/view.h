@@ -28,9 +28,9 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "common/audio_driver.h"
 #include "fulgur/gpu.h"
-#include "run_driver.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 #define VIEW_MAX_CHARGES 64
 /* A discharge is emitted this long after the frame that asked for it: time

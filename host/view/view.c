@@ -3,8 +3,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "commands.h"
-#include "run_clock.h"
+#include "common/commands.h"
+#include "run/run_clock.h"
 #include "view.h"
 
 /* The camera starts at the scene's framing of its first discharge. */

@@ -3,8 +3,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "audio_driver.h"
 #include "audio_file.h"
-#include "run_driver.h"
 
 int run_driver_parse(const char *text, run_audio_kind *kind, const char **wav_path)
 {

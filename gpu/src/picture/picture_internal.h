@@ -5,7 +5,7 @@
 #define FULGUR_GPU_PICTURE_INTERNAL_H
 
 #include "fulgur/gpu_picture.h"
-#include "gpu_internal.h"
+#include "context/gpu_internal.h"
 
 /* At most this many flashes at once. */
 #define FGG_PICTURE_MAX_FLASHES 1024

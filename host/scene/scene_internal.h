@@ -3,7 +3,7 @@
 #ifndef HOST_SCENE_INTERNAL_H
 #define HOST_SCENE_INTERNAL_H
 
-#include "json_field.h"
+#include "json_read.h"
 #include "scene.h"
 
 /* "listener" (item may be NULL: the default pose) into s->poses. */

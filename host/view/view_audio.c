@@ -7,7 +7,7 @@
  * blocks to wait for the target and to announce progress. */
 #include <math.h>
 
-#include "run_clock.h"
+#include "run/run_clock.h"
 #include "view.h"
 
 static bool headless(const view *v)

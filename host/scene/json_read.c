@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "json_field.h"
+#include "json_read.h"
 
 void json_path_key(char *out, size_t size, const char *base, const char *key)
 {

@@ -29,9 +29,9 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "run_driver.h"
+#include "common/audio_driver.h"
 #include "run_stats.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 /* The sim thread's polling period in paced mode: part of the post path. */
 #define RUN_SIM_POLL_NS 500000

@@ -6,7 +6,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 /* Draws the built scene at time_s (has_time false: the first return
  * stroke, the earliest emit time) from the scene's camera and writes a
