@@ -1,7 +1,7 @@
 /* A waveform decimated for plotting: per bucket of frames, the time of its
  * first frame and the minimum and maximum of each channel. */
-#ifndef HOST_ENVELOPE_H
-#define HOST_ENVELOPE_H
+#ifndef HOST_CLI_ENVELOPE_H
+#define HOST_CLI_ENVELOPE_H
 
 #include <stddef.h>
 #include <stdio.h>

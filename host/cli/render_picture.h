@@ -1,7 +1,7 @@
 /* fulgur render --png: one picture of the scene's discharges through gpu/
  * (an EGL context, headless). Built only with FULGUR_GPU. */
-#ifndef HOST_RENDER_PICTURE_H
-#define HOST_RENDER_PICTURE_H
+#ifndef HOST_CLI_RENDER_PICTURE_H
+#define HOST_CLI_RENDER_PICTURE_H
 
 #include <stdbool.h>
 #include <stddef.h>

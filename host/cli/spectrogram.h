@@ -1,8 +1,8 @@
 /* A short-time Fourier spectrogram for plotting on a log-frequency axis:
  * Hann-windowed frames (FFTW r2c) of one channel, bins grouped into bands
  * of at least 1/24 octave, each band's level in dB re 20 uPa. */
-#ifndef HOST_SPECTROGRAM_H
-#define HOST_SPECTROGRAM_H
+#ifndef HOST_CLI_SPECTROGRAM_H
+#define HOST_CLI_SPECTROGRAM_H
 
 #include <stddef.h>
 #include <stdio.h>

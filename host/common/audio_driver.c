@@ -6,14 +6,14 @@
 #include "audio_driver.h"
 #include "audio_file.h"
 
-int run_driver_parse(const char *text, run_audio_kind *kind, const char **wav_path)
+int audio_driver_parse(const char *text, audio_driver_kind *kind, const char **wav_path)
 {
     if (strcmp(text, "null") == 0) {
-        *kind = RUN_AUDIO_NULL;
+        *kind = AUDIO_DRIVER_NULL;
     } else if (strcmp(text, "raw:-") == 0) {
-        *kind = RUN_AUDIO_RAW;
+        *kind = AUDIO_DRIVER_RAW;
     } else if (strncmp(text, "wav:", 4) == 0 && text[4]) {
-        *kind = RUN_AUDIO_WAV;
+        *kind = AUDIO_DRIVER_WAV;
         *wav_path = text + 4;
     } else {
         return -1;
@@ -21,19 +21,25 @@ int run_driver_parse(const char *text, run_audio_kind *kind, const char **wav_pa
     return 0;
 }
 
-int run_driver_start(run_driver *d, run_audio_kind kind, const char *path, double rate_hz,
-                     uint32_t channels, uint32_t block_frames, float gain, char *err,
-                     size_t err_size)
+const char *audio_driver_name(audio_driver_kind kind)
 {
-    *d = (run_driver){.kind = kind, .channels = channels, .gain = gain};
-    if (kind == RUN_AUDIO_NULL)
+    static const char *const names[] = {"null", "wav", "raw"};
+    return names[kind];
+}
+
+int audio_driver_start(audio_driver *d, audio_driver_kind kind, const char *path,
+                       double rate_hz, uint32_t channels, uint32_t block_frames, float gain,
+                       char *err, size_t err_size)
+{
+    *d = (audio_driver){.kind = kind, .channels = channels, .gain = gain};
+    if (kind == AUDIO_DRIVER_NULL)
         return 0;
     d->interleaved = malloc((size_t)block_frames * channels * sizeof(float));
     if (!d->interleaved) {
         snprintf(err, err_size, "out of memory");
         return -1;
     }
-    if (kind == RUN_AUDIO_RAW)
+    if (kind == AUDIO_DRIVER_RAW)
         return 0;
     if (temp_file_open(&d->file, path, err, err_size) != 0)
         goto fail;
@@ -49,13 +55,13 @@ fail:
     return -1;
 }
 
-int run_driver_write(run_driver *d, float *const *planes, uint32_t frames, char *err,
-                     size_t err_size)
+int audio_driver_write(audio_driver *d, float *const *planes, uint32_t frames, char *err,
+                       size_t err_size)
 {
-    if (d->kind == RUN_AUDIO_NULL)
+    if (d->kind == AUDIO_DRIVER_NULL)
         return 0;
     audio_interleave(planes, d->channels, frames, d->gain, d->interleaved);
-    if (d->kind == RUN_AUDIO_RAW) {
+    if (d->kind == AUDIO_DRIVER_RAW) {
         if (fwrite(d->interleaved, sizeof(float) * d->channels, frames, stdout) != frames) {
             snprintf(err, err_size, "writing raw samples to stdout failed");
             return -1;
@@ -69,14 +75,14 @@ int run_driver_write(run_driver *d, float *const *planes, uint32_t frames, char 
     return 0;
 }
 
-int run_driver_stop(run_driver *d, bool keep, char *err, size_t err_size)
+int audio_driver_stop(audio_driver *d, bool keep, char *err, size_t err_size)
 {
     int rc = 0;
-    if (d->kind == RUN_AUDIO_RAW && fflush(stdout) != 0) {
+    if (d->kind == AUDIO_DRIVER_RAW && fflush(stdout) != 0) {
         snprintf(err, err_size, "writing raw samples to stdout failed");
         rc = -1;
     }
-    if (d->kind == RUN_AUDIO_WAV) {
+    if (d->kind == AUDIO_DRIVER_WAV) {
         if (sf_close(d->wav) != 0 && keep) {
             snprintf(err, err_size, "%s: closing the WAV failed", d->file.path);
             keep = false;

@@ -1,8 +1,8 @@
 /* Sound out of the engine into files and streams: the planes interleaved
  * with the scene's gain, and a 32-bit float WAV writer whose bytes depend
  * only on the samples. Shared by fulgur render and fulgur run. */
-#ifndef HOST_AUDIO_FILE_H
-#define HOST_AUDIO_FILE_H
+#ifndef HOST_COMMON_AUDIO_FILE_H
+#define HOST_COMMON_AUDIO_FILE_H
 
 #include <sndfile.h>
 #include <stddef.h>

@@ -1,8 +1,8 @@
 /* The subcommands of the fulgur program. Each takes the arguments after its
  * name (argv[0] is the subcommand), prints its own --help, and returns the
  * process exit code. */
-#ifndef HOST_COMMANDS_H
-#define HOST_COMMANDS_H
+#ifndef HOST_COMMON_COMMANDS_H
+#define HOST_COMMON_COMMANDS_H
 
 enum {
     CLI_OK = 0,

@@ -2,8 +2,8 @@
  * temporary name in the same directory and renamed over the final path at
  * commit, so a failed run leaves no file behind (and an older file at that
  * path untouched). */
-#ifndef HOST_TEMP_FILE_H
-#define HOST_TEMP_FILE_H
+#ifndef HOST_COMMON_TEMP_FILE_H
+#define HOST_COMMON_TEMP_FILE_H
 
 #include <stddef.h>
 #include <stdio.h>

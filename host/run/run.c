@@ -4,14 +4,14 @@
 #include <string.h>
 
 #include "common/commands.h"
-#include "run_clock.h"
+#include "run_gate.h"
 
 /* Allocates what the threads use; the engine last. */
 static int set_up(run_ctx *run, char *err, size_t err_size)
 {
     const scene *s = run->s;
     size_t n = s->discharge_count ? s->discharge_count : 1;
-    run->paced = run->opt.audio == RUN_AUDIO_NULL;
+    run->paced = run->opt.audio == AUDIO_DRIVER_NULL;
     run->block_frames = run->opt.block_frames ? run->opt.block_frames : s->block_frames;
     run->rate_hz = run->opt.rate_hz ? run->opt.rate_hz : s->sample_rate_hz;
     double seconds = run->opt.seconds ? run->opt.seconds : s->duration_s;
@@ -76,7 +76,7 @@ static int run_threads(run_ctx *run, char *err, size_t err_size)
     void *(*const bodies[3])(void *) = {run_frame_thread, run_sim_thread, run_audio_thread};
     pthread_t threads[3];
     int started = 0;
-    run->start_ns = run_now_ns();
+    run->start_ns = monotonic_now_ns();
     while (started < 3 && pthread_create(&threads[started], NULL, bodies[started], run) == 0)
         started++;
     if (started < 3)
@@ -97,7 +97,7 @@ static int write_report(const run_ctx *run, double wall_s, char *err, size_t err
         snprintf(err, err_size, "out of memory");
         return -1;
     }
-    FILE *to = run->opt.audio == RUN_AUDIO_RAW ? stderr : stdout;
+    FILE *to = run->opt.audio == AUDIO_DRIVER_RAW ? stderr : stdout;
     if (run->opt.report_path && !(to = fopen(run->opt.report_path, "w"))) {
         snprintf(err, err_size, "%s: cannot create", run->opt.report_path);
         free(text);
@@ -115,17 +115,17 @@ static int run_scene(run_ctx *run)
 {
     char err[512] = "";
     int ok = set_up(run, err, sizeof err) == 0 &&
-             run_driver_start(&run->driver, run->opt.audio, run->opt.wav_path, run->rate_hz,
-                              run->s->channels, run->block_frames, (float)run->s->gain, err,
-                              sizeof err) == 0;
+             audio_driver_start(&run->driver, run->opt.audio, run->opt.wav_path, run->rate_hz,
+                                run->s->channels, run->block_frames, (float)run->s->gain, err,
+                                sizeof err) == 0;
     if (!ok) {
         tear_down(run);
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
     }
-    uint64_t t0 = run_now_ns();
+    uint64_t t0 = monotonic_now_ns();
     ok = run_threads(run, err, sizeof err) == 0;
-    double wall_s = (double)(run_now_ns() - t0) * 1e-9;
+    double wall_s = (double)(monotonic_now_ns() - t0) * 1e-9;
     int fail_rc = CLI_RUNTIME;
     if (ok && run->sim_error[0]) {
         snprintf(err, sizeof err, "%s", run->sim_error);
@@ -140,7 +140,7 @@ static int run_scene(run_ctx *run)
         ok = 0;
     }
     char stop_err[512];
-    if (run_driver_stop(&run->driver, ok, stop_err, sizeof stop_err) != 0 && ok) {
+    if (audio_driver_stop(&run->driver, ok, stop_err, sizeof stop_err) != 0 && ok) {
         snprintf(err, sizeof err, "%s", stop_err);
         ok = 0;
     }

@@ -6,7 +6,7 @@
  *                              retries a full pool/queue, fg_engine_collect
  *   audio thread  run_audio.c  a driver pulling fg_engine_render per block
  *
- * Two ways to keep time (run_clock.c):
+ * Two ways to keep time (run_gate.c):
  *   paced      (--audio null) the audio thread sleeps to absolute deadlines
  *              one block period apart, like a sound card; the frame thread
  *              to its own 90 Hz deadlines; the sim thread polls the engine
@@ -20,8 +20,8 @@
  * Ownership: everything in run_ctx is allocated by run.c before the
  * threads start and freed after they are joined. Each measurement array is
  * written by one thread only and read by run_report.c after the join. */
-#ifndef HOST_RUN_H
-#define HOST_RUN_H
+#ifndef HOST_RUN_RUN_H
+#define HOST_RUN_RUN_H
 
 #include <pthread.h>
 #include <stdatomic.h>
@@ -45,8 +45,8 @@
 
 typedef struct run_options {
     const char *scene_path;
-    run_audio_kind audio;
-    const char *wav_path;     /* RUN_AUDIO_WAV */
+    audio_driver_kind audio;
+    const char *wav_path;     /* AUDIO_DRIVER_WAV */
     uint32_t block_frames;    /* 0: the scene's */
     double rate_hz;           /* 0: the scene's */
     double seconds;           /* 0: the scene's duration, else until all have sounded */
@@ -92,7 +92,7 @@ typedef struct run_ctx {
     bool sim_error_in_scene;  /* ... and it was the scene's fault (a generator's) */
 
     /* audio thread's */
-    run_driver driver;
+    audio_driver driver;
     float *planes[2];
     uint64_t adopted;         /* voices seen adopted */
     uint64_t *adopt_frame;    /* block start, by post order */

@@ -4,10 +4,8 @@
  * after the next deadline makes the next one start at once (catching up,
  * as a device with a deeper buffer would). This path takes no lock and
  * never allocates or prints. Lock-step (wav, raw): each block waits for its
- * inputs (run_clock.h), then goes to the driver. */
-#include <math.h>
-
-#include "run_clock.h"
+ * inputs (run_gate.h), then goes to the driver. */
+#include "run_gate.h"
 
 /* Notes the voices adopted by the block that started at frames at wall
  * time t_ns: adoption is in post order (one ring), so the k-th adopted is
@@ -42,14 +40,14 @@ void *run_audio_thread(void *arg)
         uint64_t left = run->limit_frames - frames;
         uint32_t n = left < run->block_frames ? (uint32_t)left : run->block_frames;
         if (run->paced)
-            run_sleep_until(run->start_ns + (uint64_t)llround((double)block * period_s * 1e9));
+            monotonic_sleep_until_ns(monotonic_deadline_ns(run->start_ns, block, period_s));
         else if (!run_wait_inputs(run, frames))
             break;
         if (run_stopping(run))
             break;
-        uint64_t t0 = run_now_ns();
+        uint64_t t0 = monotonic_now_ns();
         fg_result r = fg_engine_render(run->engine, run->planes, n);
-        double took_s = (double)(run_now_ns() - t0) * 1e-9, budget_s = n / run->rate_hz;
+        double took_s = (double)(monotonic_now_ns() - t0) * 1e-9, budget_s = n / run->rate_hz;
         if (r != FG_OK) {
             run->render_result = r; /* reported by the main thread */
             break;
@@ -61,8 +59,8 @@ void *run_audio_thread(void *arg)
         frames += n;
         run->frames_out = frames;
         run_publish_engine(run, frames);
-        if (run_driver_write(&run->driver, run->planes, n, run->audio_error,
-                             sizeof run->audio_error) != 0)
+        if (audio_driver_write(&run->driver, run->planes, n, run->audio_error,
+                               sizeof run->audio_error) != 0)
             break;
         if (run->until_done && all_sounded(run))
             break;

@@ -6,7 +6,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "run_clock.h"
+#include "run_gate.h"
 
 #define RUN_PI 3.14159265358979323846 /* C11 has no M_PI */
 
@@ -81,9 +81,9 @@ void *run_frame_thread(void *arg)
     double period_s = 1.0 / run->opt.frame_hz;
     for (uint64_t tick = 0; !run_stopping(run); tick++) {
         if (run->paced) {
-            uint64_t deadline = run->start_ns + (uint64_t)llround((double)tick * period_s * 1e9);
-            run_sleep_until(deadline);
-            run_hist_add(&run->jitter, (double)(int64_t)(run_now_ns() - deadline) * 1e-9);
+            uint64_t deadline = monotonic_deadline_ns(run->start_ns, tick, period_s);
+            monotonic_sleep_until_ns(deadline);
+            run_hist_add(&run->jitter, (double)(int64_t)(monotonic_now_ns() - deadline) * 1e-9);
         } else {
             /* the tick comes when the engine clock reaches it */
             uint64_t seen = 0;

@@ -50,7 +50,7 @@ int run_parse_options(int argc, char **argv, run_options *o)
 {
     static const uint32_t blocks[] = {64, 128, 256, 512};
     static const uint32_t rates[] = {44100, 48000, 96000};
-    *o = (run_options){.audio = RUN_AUDIO_NULL, .frame_hz = 90};
+    *o = (run_options){.audio = AUDIO_DRIVER_NULL, .frame_hz = 90};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         uint32_t rate = 0;
@@ -65,7 +65,7 @@ int run_parse_options(int argc, char **argv, run_options *o)
         } else if (!v) {
             bad = 1;
         } else if (strcmp(a, "--audio") == 0) {
-            bad = run_driver_parse(v, &o->audio, &o->wav_path);
+            bad = audio_driver_parse(v, &o->audio, &o->wav_path);
         } else if (strcmp(a, "--block") == 0) {
             bad = parse_u32(v, blocks, 4, &o->block_frames);
         } else if (strcmp(a, "--rate") == 0) {

@@ -10,7 +10,7 @@
  * are counted in the report. */
 #include <stdio.h>
 
-#include "run_clock.h"
+#include "run_gate.h"
 
 static bool refused_for_room(fg_result r)
 {
@@ -36,9 +36,9 @@ static int post_due(run_ctx *run, uint64_t now, size_t *next)
             return 0;
         fg_discharge post;
         scene_discharge_post(d, &post);
-        uint64_t t0 = run_now_ns();
+        uint64_t t0 = monotonic_now_ns();
         fg_result r = fg_engine_post(run->engine, &post, NULL);
-        run_hist_add(&run->post_call, (double)(run_now_ns() - t0) * 1e-9);
+        run_hist_add(&run->post_call, (double)(monotonic_now_ns() - t0) * 1e-9);
         if (r == FG_OK) {
             size_t k = run->posts++;
             run->post_frame[k] = now;

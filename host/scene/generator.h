@@ -1,8 +1,8 @@
 /* The seam between a scene's "generator" object and the engine's pattern
  * generators. Each generator type parses its own JSON object and fills a
- * tree; host/generator.c holds the table of types. */
-#ifndef FULGUR_HOST_GENERATOR_H
-#define FULGUR_HOST_GENERATOR_H
+ * tree; scene/generator.c holds the table of types. */
+#ifndef HOST_SCENE_GENERATOR_H
+#define HOST_SCENE_GENERATOR_H
 
 #include <stddef.h>
 #include <stdint.h>

@@ -1,9 +1,9 @@
-/* The field generators of host/generator_field.c, for the table in
- * host/generator.c: {"spark_gap", gen_spark_gap}, {"plasma_ball",
+/* The field generators of scene/generator_field.c, for the table in
+ * scene/generator.c: {"spark_gap", gen_spark_gap}, {"plasma_ball",
  * gen_plasma_ball}, {"field", gen_field}. Each is a gen_fn (generator.h);
  * the JSON is in docs/generators-field.md. */
-#ifndef FULGUR_HOST_GENERATOR_FIELD_H
-#define FULGUR_HOST_GENERATOR_FIELD_H
+#ifndef HOST_SCENE_GENERATOR_FIELD_H
+#define HOST_SCENE_GENERATOR_FIELD_H
 
 #include "generator.h"
 

@@ -1,6 +1,6 @@
 /* The field generators' GPU path (built when gpu/ is: FULGUR_HOST_GPU). */
-#ifndef FULGUR_HOST_GENERATOR_FIELD_GPU_H
-#define FULGUR_HOST_GENERATOR_FIELD_GPU_H
+#ifndef HOST_SCENE_GENERATOR_FIELD_GPU_H
+#define HOST_SCENE_GENERATOR_FIELD_GPU_H
 
 #include <stddef.h>
 

@@ -1,7 +1,7 @@
 /* The "lightning" (statistical, designer thunder) and "charges" (point-
  * charge leader) scene generators; JSON in docs/generators-lightning.md. */
-#ifndef FULGUR_HOST_GENERATOR_LIGHTNING_H
-#define FULGUR_HOST_GENERATOR_LIGHTNING_H
+#ifndef HOST_SCENE_GENERATOR_LIGHTNING_H
+#define HOST_SCENE_GENERATOR_LIGHTNING_H
 
 #include "generator.h"
 

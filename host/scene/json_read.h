@@ -5,8 +5,8 @@
  * err (always NUL-terminated) and returns -1; success returns 0. Paths are
  * built by the caller with json_path_key/json_path_index; the root's path is
  * the empty string. */
-#ifndef HOST_JSON_FIELD_H
-#define HOST_JSON_FIELD_H
+#ifndef HOST_SCENE_JSON_READ_H
+#define HOST_SCENE_JSON_READ_H
 
 #include <stdbool.h>
 #include <stddef.h>

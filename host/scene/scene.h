@@ -3,11 +3,11 @@
  * Two steps. scene_parse checks the whole file and fills a plain struct:
  * explicit trees are read and checked with fg_tree_check, generator objects
  * are kept as their JSON (only their type is checked). scene_build then runs
- * each generator (host/generator.h) to give every discharge its tree.
+ * each generator (scene/generator.h) to give every discharge its tree.
  * Errors name the JSON path: "discharges[2].tree.nodes[7]: parent 9 is not
  * before node 7". A failed call leaves nothing allocated. */
-#ifndef HOST_SCENE_H
-#define HOST_SCENE_H
+#ifndef HOST_SCENE_SCENE_H
+#define HOST_SCENE_SCENE_H
 
 #include <stdbool.h>
 #include <stddef.h>

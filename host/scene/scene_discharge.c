@@ -119,6 +119,19 @@ static int parse_source(const cJSON *obj, const char *base, scene_discharge *d, 
     return parse_generator(gen, path, d, err, err_size);
 }
 
+uint64_t scene_discharge_seed(uint64_t scene_seed, size_t index)
+{
+    /* splitmix64's finaliser over the seed, then over the index mixed in:
+     * neighbouring indices and seeds give unrelated values. */
+    uint64_t z = scene_seed + 0x9e3779b97f4a7c15u * ((uint64_t)index + 1);
+    for (int round = 0; round < 2; round++) {
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+        z ^= z >> 31;
+    }
+    return z;
+}
+
 int scene_parse_discharge(const cJSON *item, const char *path, size_t index, const scene *s,
                           scene_discharge *d, char *err, size_t err_size)
 {

@@ -1,7 +1,7 @@
 /* The pieces of the scene parser, one file each. Each returns 0, or -1 with
- * a path-bearing message in err (see json_field.h). */
-#ifndef HOST_SCENE_INTERNAL_H
-#define HOST_SCENE_INTERNAL_H
+ * a path-bearing message in err (see json_read.h). */
+#ifndef HOST_SCENE_SCENE_INTERNAL_H
+#define HOST_SCENE_SCENE_INTERNAL_H
 
 #include "json_read.h"
 #include "scene.h"

@@ -193,16 +193,3 @@ void scene_deinit(scene *s)
     cJSON_Delete(s->json);
     memset(s, 0, sizeof *s);
 }
-
-uint64_t scene_discharge_seed(uint64_t scene_seed, size_t index)
-{
-    /* splitmix64's finaliser over the seed, then over the index mixed in:
-     * neighbouring indices and seeds give unrelated values. */
-    uint64_t z = scene_seed + 0x9e3779b97f4a7c15u * ((uint64_t)index + 1);
-    for (int round = 0; round < 2; round++) {
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-        z ^= z >> 31;
-    }
-    return z;
-}

@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "common/commands.h"
-#include "run/run_clock.h"
+#include "common/clock.h"
 #include "view.h"
 
 /* The camera starts at the scene's framing of its first discharge. */
@@ -73,7 +73,7 @@ static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
     /* headless: every request answered before the audio passes this frame */
     while (headless && v->replies < v->requests && !atomic_load(&v->stop)) {
         take_replies(v, pic);
-        run_sleep_until(run_now_ns() + 200000);
+        monotonic_sleep_until_ns(monotonic_now_ns() + 200000);
     }
     take_replies(v, pic);
     fgg_camera cam;
@@ -103,7 +103,7 @@ static int loop(view *v, fgg_context *ctx, fgg_picture *pic, char *err, size_t e
     if (v->opt.script_path &&
         view_script_load(v->opt.script_path, &events, &count, err, err_size) != 0)
         return CLI_USAGE;
-    uint64_t period_ns = (uint64_t)llround(1e9 / v->opt.fps), t0 = run_now_ns();
+    uint64_t t0 = monotonic_now_ns();
     int rc = CLI_OK;
     for (uint32_t k = 0; (!v->opt.frames || k < v->opt.frames) && !v->quit; k++) {
         if (atomic_load(&v->stop))
@@ -115,7 +115,7 @@ static int loop(view *v, fgg_context *ctx, fgg_picture *pic, char *err, size_t e
         }
         v->frames_drawn = k + 1;
         if (v->opt.backend == FGG_BACKEND_WINDOW)
-            run_sleep_until(t0 + (k + 1) * period_ns);
+            monotonic_sleep_until_ns(monotonic_deadline_ns(t0, k + 1, 1 / v->opt.fps));
     }
     free(events);
     /* headless: the sound of every frame drawn, then stop */
@@ -132,7 +132,7 @@ static void summary(view *v, uint32_t frames)
 {
     fg_engine_stats st;
     fg_engine_get_stats(v->engine, &st);
-    FILE *to = v->opt.audio == RUN_AUDIO_RAW ? stderr : stdout;
+    FILE *to = v->opt.audio == AUDIO_DRIVER_RAW ? stderr : stdout;
     fprintf(to,
             "{\"frames\": %u, \"requests\": %llu, \"posted\": %llu, \"adopted\": %llu, "
             "\"late_events\": %llu, \"audio_frames\": %llu}\n",
@@ -186,8 +186,8 @@ static int view_scene(view *v)
             snprintf(err, sizeof err, "out of memory");
             goto done;
         }
-    if (run_driver_start(&v->driver, v->opt.audio, v->opt.wav_path, v->rate_hz,
-                         v->s->channels, v->block_frames, (float)v->s->gain, err, sizeof err))
+    if (audio_driver_start(&v->driver, v->opt.audio, v->opt.wav_path, v->rate_hz,
+                           v->s->channels, v->block_frames, (float)v->s->gain, err, sizeof err))
         goto done;
     started = pthread_create(&sim, NULL, view_sim_thread, v) == 0;
     started += started && pthread_create(&audio, NULL, view_audio_thread, v) == 0;
@@ -214,7 +214,7 @@ static int view_scene(view *v)
         rc = CLI_RUNTIME;
     }
     char stop_err[512];
-    if (run_driver_stop(&v->driver, rc == CLI_OK, stop_err, sizeof stop_err) != 0 &&
+    if (audio_driver_stop(&v->driver, rc == CLI_OK, stop_err, sizeof stop_err) != 0 &&
         rc == CLI_OK) {
         snprintf(err, sizeof err, "%s", stop_err);
         rc = CLI_RUNTIME;

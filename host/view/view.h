@@ -8,7 +8,7 @@
  *                 view_apply to the state
  *   view_sim.c    [sim-thread] grows trees (generators, charges), posts
  *                 them, answers with the tree and its stroke offsets
- *   view_audio.c  [audio-thread] pulls fg_engine_render into run's driver
+ *   view_audio.c  [audio-thread] pulls fg_engine_render into an audio driver
  *
  * The frame thread and the sim thread talk through two single-producer,
  * single-consumer rings (view_ring): requests one way, grown trees back.
@@ -20,8 +20,8 @@
  *   headless  lock-step and deterministic: frame k is drawn at k / fps;
  *             before the audio thread may render past it, every request of
  *             that frame has been answered (posted) by the sim thread. */
-#ifndef HOST_VIEW_H
-#define HOST_VIEW_H
+#ifndef HOST_VIEW_VIEW_H
+#define HOST_VIEW_VIEW_H
 
 #include <pthread.h>
 #include <stdatomic.h>
@@ -90,7 +90,7 @@ typedef struct view_request {
 typedef struct view_options {
     const char *scene_path;
     fgg_backend backend;
-    run_audio_kind audio;
+    audio_driver_kind audio;
     const char *wav_path;
     uint32_t frames;         /* 0: until Esc (window); headless needs a count */
     double fps;              /* 60 */
@@ -127,7 +127,7 @@ typedef struct view {
     uint64_t audio_target;   /* headless: the audio thread may render up to here */
     _Atomic uint64_t audio_done; /* frames rendered */
     atomic_bool stop;
-    run_driver driver;
+    audio_driver driver;
     float *planes[2];
     char audio_error[512];
     fg_result render_result;

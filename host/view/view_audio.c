@@ -1,13 +1,11 @@
 /* The viewer's audio thread: fg_engine_render one block at a time into
- * fulgur run's drivers (run_driver.h). Window: paced by the monotonic clock
- * to absolute deadlines one block period apart, as run paces its null
+ * the audio drivers (common/audio_driver.h). Window: paced by the monotonic
+ * clock to absolute deadlines one block period apart, as run paces its null
  * device, whatever the driver (a player reading raw:- wants real time).
  * Headless: lock-step, rendering up to the frame thread's audio_target.
  * Paced, the loop takes no lock; headless, the gate's lock is taken between
  * blocks to wait for the target and to announce progress. */
-#include <math.h>
-
-#include "run/run_clock.h"
+#include "common/clock.h"
 #include "view.h"
 
 static bool headless(const view *v)
@@ -30,7 +28,7 @@ void *view_audio_thread(void *arg)
 {
     view *v = arg;
     double period_s = v->block_frames / v->rate_hz;
-    uint64_t frames = 0, start_ns = run_now_ns();
+    uint64_t frames = 0, start_ns = monotonic_now_ns();
     for (uint64_t block = 0; !atomic_load(&v->stop); block++) {
         uint32_t n = v->block_frames;
         if (headless(v)) {
@@ -41,14 +39,14 @@ void *view_audio_thread(void *arg)
             pthread_mutex_unlock(&v->lock);
             n = left < n ? (uint32_t)left : n;
         } else {
-            run_sleep_until(start_ns + (uint64_t)llround((double)block * period_s * 1e9));
+            monotonic_sleep_until_ns(monotonic_deadline_ns(start_ns, block, period_s));
         }
         fg_result r = fg_engine_render(v->engine, v->planes, n);
         if (r != FG_OK) {
             v->render_result = r; /* read by the frame thread after the join */
             break;
         }
-        if (run_driver_write(&v->driver, v->planes, n, v->audio_error, sizeof v->audio_error))
+        if (audio_driver_write(&v->driver, v->planes, n, v->audio_error, sizeof v->audio_error))
             break;
         frames += n;
         atomic_store(&v->audio_done, frames);

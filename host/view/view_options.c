@@ -46,7 +46,7 @@ static int parse_size(const char *text, view_options *o)
 
 int view_parse_options(int argc, char **argv, view_options *o)
 {
-    *o = (view_options){.backend = FGG_BACKEND_WINDOW, .audio = RUN_AUDIO_NULL, .fps = 60,
+    *o = (view_options){.backend = FGG_BACKEND_WINDOW, .audio = AUDIO_DRIVER_NULL, .fps = 60,
                         .width = 960, .height = 540};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -67,7 +67,7 @@ int view_parse_options(int argc, char **argv, view_options *o)
                 return -1;
             }
         } else if (strcmp(a, "--audio") == 0) {
-            bad = run_driver_parse(v, &o->audio, &o->wav_path);
+            bad = audio_driver_parse(v, &o->audio, &o->wav_path);
         } else if (strcmp(a, "--frames") == 0) {
             bad = parse_count(v, 1, 1e7, &x);
             o->frames = (uint32_t)x;

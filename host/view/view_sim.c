@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "run/run_clock.h"
+#include "common/clock.h"
 #include "view.h"
 
 static int grow_charges(const view_request *q, fg_tree *tree, char *err, size_t err_size)
@@ -147,13 +147,13 @@ void *view_sim_thread(void *arg)
         fg_engine_collect(v->engine);
         view_request *q = view_ring_pop(&v->to_sim);
         if (!q) {
-            run_sleep_until(run_now_ns() + 500000);
+            monotonic_sleep_until_ns(monotonic_now_ns() + 500000);
             continue;
         }
         answer(v, q, &held);
         /* the frame thread drains the replies every frame */
         while (!view_ring_push(&v->from_sim, q) && !atomic_load(&v->stop))
-            run_sleep_until(run_now_ns() + 500000);
+            monotonic_sleep_until_ns(monotonic_now_ns() + 500000);
     }
     fg_engine_collect(v->engine);
     return NULL;

@@ -1,27 +1,9 @@
-/* The monotonic clock and the lock-step gate. The gate's mutex is taken by
- * the audio thread only in lock-step mode, where it writes a file and is no
- * real-time thread; the paced (null) device never touches it. */
-#define _POSIX_C_SOURCE 200809L /* clock_nanosleep */
-#include <errno.h>
+/* The lock-step gate. Its mutex is taken by the audio thread only in
+ * lock-step mode, where it writes a file and is no real-time thread; the
+ * paced (null) device never touches it. */
 #include <math.h>
-#include <time.h>
 
-#include "run_clock.h"
-
-uint64_t run_now_ns(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (uint64_t)ts.tv_sec * 1000000000u + (uint64_t)ts.tv_nsec;
-}
-
-void run_sleep_until(uint64_t deadline_ns)
-{
-    struct timespec ts = {.tv_sec = (time_t)(deadline_ns / 1000000000u),
-                          .tv_nsec = (long)(deadline_ns % 1000000000u)};
-    while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, NULL) == EINTR)
-        ;
-}
+#include "run_gate.h"
 
 uint64_t run_tick_at(const run_ctx *run, uint64_t frames)
 {
@@ -63,10 +45,10 @@ bool run_stopping(run_ctx *run)
 void run_wait_engine_past(run_ctx *run, uint64_t frames)
 {
     if (run->paced) {
-        uint64_t t = run_now_ns();
+        uint64_t t = monotonic_now_ns();
         while (fg_engine_frames(run->engine) <= frames && !run_stopping(run)) {
             t += RUN_SIM_POLL_NS;
-            run_sleep_until(t);
+            monotonic_sleep_until_ns(t);
         }
         return;
     }

@@ -1,16 +1,11 @@
-/* Time for fulgur run: the monotonic clock, sleeping to absolute deadlines,
- * and the lock-step gate between the three threads (see run.h). */
-#ifndef HOST_RUN_CLOCK_H
-#define HOST_RUN_CLOCK_H
+/* The lock-step gate between fulgur run's three threads, stopping them,
+ * and the 90 Hz tick on the engine clock (see run.h). The clock itself is
+ * common/clock.h. */
+#ifndef HOST_RUN_RUN_GATE_H
+#define HOST_RUN_RUN_GATE_H
 
+#include "common/clock.h"
 #include "run.h"
-
-/* CLOCK_MONOTONIC in nanoseconds. [any-thread] */
-uint64_t run_now_ns(void);
-
-/* Sleeps until the monotonic clock reads deadline_ns (clock_nanosleep,
- * TIMER_ABSTIME); returns at once when it has passed. */
-void run_sleep_until(uint64_t deadline_ns);
 
 /* The 90 Hz tick in force at engine frame `frames`: floor(frames * fps / rate). */
 uint64_t run_tick_at(const run_ctx *run, uint64_t frames);
