@@ -9,16 +9,16 @@
 #include "generator_lightning.h"
 #include "json_read.h"
 
-static const json_range positive = {0, 1e7, true, false, false};
-static const json_range non_negative = {0, 1e7, false, false, false};
-static const json_range fraction = {0, 1, false, false, false};
+static const number_range positive = {0, 1e7, true, false, false};
+static const number_range non_negative = {0, 1e7, false, false, false};
+static const number_range fraction = {0, 1, false, false, false};
 static const double deg = 3.14159265358979323846 / 180.0;
 
 static int count_range(const cJSON *obj, const char *base, const char *key, double lo, double hi,
                        uint32_t *out, char *err, size_t err_size)
 {
     double v = *out;
-    if (json_number(obj, base, key, (json_range){lo, hi, false, false, true}, &v, err, err_size))
+    if (json_number(obj, base, key, (number_range){lo, hi, false, false, true}, &v, err, err_size))
         return -1;
     *out = (uint32_t)v;
     return 0;
@@ -81,7 +81,7 @@ static int parse_block(const cJSON *item, const char *path, fg_thunder_block *b,
     b->start = NAN, b->end = NAN, b->amplitude = 1;
     if (json_number(item, path, "start", fraction, &b->start, err, err_size) ||
         json_number(item, path, "end", fraction, &b->end, err, err_size) ||
-        json_number(item, path, "amplitude", (json_range){0, 1, true, false, false},
+        json_number(item, path, "amplitude", (number_range){0, 1, true, false, false},
                     &b->amplitude, err, err_size))
         return -1;
     if (isnan(b->start) || isnan(b->end))
@@ -123,7 +123,7 @@ static int placement(const cJSON *spec, const char *path, const gen_context *ctx
 {
     double distance = -1, azimuth = 0;
     if (json_number(spec, path, "distance", non_negative, &distance, err, err_size) ||
-        json_number(spec, path, "azimuth_deg", (json_range){-360, 360, false, false, false},
+        json_number(spec, path, "azimuth_deg", (number_range){-360, 360, false, false, false},
                     &azimuth, err, err_size))
         return -1;
     *placed = distance >= 0;
@@ -163,9 +163,9 @@ int gen_lightning(const cJSON *spec, const char *path, const gen_context *ctx, f
         placement(spec, path, ctx, p.strike_m, &placed, err, err_size) ||
         json_number(spec, path, "height", positive, &p.height_m, err, err_size) ||
         json_number(spec, path, "segment", positive, &p.segment_m, err, err_size) ||
-        json_number(spec, path, "turn_mean_deg", (json_range){0, 90, true, true, false},
+        json_number(spec, path, "turn_mean_deg", (number_range){0, 90, true, true, false},
                     &p.turn_mean_deg, err, err_size) ||
-        json_number(spec, path, "max_deviation_deg", (json_range){0, 180, true, true, false},
+        json_number(spec, path, "max_deviation_deg", (number_range){0, 180, true, true, false},
                     &p.max_deviation_deg, err, err_size) ||
         json_number(spec, path, "lookahead", positive, &p.lookahead_m, err, err_size) ||
         json_number(spec, path, "branch_probability", fraction, &branch_p, err, err_size) ||
@@ -223,7 +223,7 @@ static int parse_charges(const cJSON *item, const char *path, fg_point_charge **
         q[i].position_m[2] = NAN;
         if (json_check_keys(c, at, keys, err, err_size) ||
             json_vec3(c, at, "position", q[i].position_m, err, err_size) ||
-            json_number(c, at, "charge", (json_range){-1e6, 1e6, false, false, false},
+            json_number(c, at, "charge", (number_range){-1e6, 1e6, false, false, false},
                         &q[i].charge_c, err, err_size) ||
             ((isnan(q[i].charge_c) || isnan(q[i].position_m[2])) &&
              json_fail(err, err_size, at, "\"position\" and \"charge\" are required"))) {

@@ -58,20 +58,11 @@ int json_check_keys(const cJSON *obj, const char *path, const char *const *allow
     return 0;
 }
 
-static void format_range(char *buf, size_t size, json_range r)
-{
-    if (!r.lo_open && !r.hi_open)
-        snprintf(buf, size, "%.16g..%.16g", r.lo, r.hi);
-    else
-        snprintf(buf, size, "%c%.16g, %.16g%c", r.lo_open ? '(' : '[', r.lo, r.hi,
-                 r.hi_open ? ')' : ']');
-}
-
-int json_number_value(const cJSON *item, const char *path, json_range r, double *out, char *err,
+int json_number_value(const cJSON *item, const char *path, number_range r, double *out, char *err,
                       size_t err_size)
 {
     char range[96];
-    format_range(range, sizeof range, r);
+    number_range_format(r, range, sizeof range);
     const char *what = r.integer ? "an integer" : "a number";
     if (!cJSON_IsNumber(item))
         return json_fail(err, err_size, path, "expected %s in %s", what, range);
@@ -80,13 +71,13 @@ int json_number_value(const cJSON *item, const char *path, json_range r, double 
         return json_fail(err, err_size, path, "expected %s in %s, not infinity", what, range);
     if (r.integer && v != floor(v))
         return json_fail(err, err_size, path, "%.16g is not an integer", v);
-    if (v < r.lo || v > r.hi || (r.lo_open && v == r.lo) || (r.hi_open && v == r.hi))
+    if (!number_range_holds(r, v))
         return json_fail(err, err_size, path, "%.16g is outside %s", v, range);
     *out = v;
     return 0;
 }
 
-int json_number(const cJSON *obj, const char *base, const char *key, json_range range,
+int json_number(const cJSON *obj, const char *base, const char *key, number_range range,
                 double *out, char *err, size_t err_size)
 {
     const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, key);

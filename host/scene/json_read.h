@@ -13,16 +13,10 @@
 
 #include <cjson/cJSON.h>
 
+#include "common/number_range.h"
+
 /* Room for any path a scene produces. */
 #define JSON_PATH_MAX 256
-
-/* The accepted values of a number: lo..hi, either end open, optionally
- * integers only. Both ends are finite. */
-typedef struct json_range {
-    double lo, hi;
-    bool lo_open, hi_open;
-    bool integer;
-} json_range;
 
 /* out = base + "." + key (just key when base is ""), and base + "[index]". */
 void json_path_key(char *out, size_t size, const char *base, const char *key);
@@ -38,12 +32,12 @@ int json_check_keys(const cJSON *obj, const char *path, const char *const *allow
                     size_t err_size);
 
 /* Checks that item (at path) is a number inside range; *out gets it. */
-int json_number_value(const cJSON *item, const char *path, json_range range, double *out,
+int json_number_value(const cJSON *item, const char *path, number_range range, double *out,
                       char *err, size_t err_size);
 
 /* Reads obj[key] as a number inside range into *out; *out keeps its value
  * (the default) when the key is absent. */
-int json_number(const cJSON *obj, const char *base, const char *key, json_range range,
+int json_number(const cJSON *obj, const char *base, const char *key, number_range range,
                 double *out, char *err, size_t err_size);
 
 /* Reads obj[key], when present, as an array of n (2 or 3) finite numbers. */

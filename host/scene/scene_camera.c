@@ -31,7 +31,7 @@ int scene_parse_camera(const cJSON *item, scene *s, char *err, size_t err_size)
     if (json_vec3(item, "camera", "eye", c->eye_m, err, err_size) ||
         json_vec3(item, "camera", "target", c->target_m, err, err_size) ||
         json_vec3(item, "camera", "up", c->up, err, err_size) ||
-        json_number(item, "camera", "fov", (json_range){0, 179, .lo_open = true, .hi_open = true},
+        json_number(item, "camera", "fov", (number_range){0, 179, .lo_open = true, .hi_open = true},
                     &c->fov_y_deg, err, err_size))
         return -1;
     double view[3];

@@ -40,17 +40,17 @@ static int parse_preset(const cJSON *obj, const char *base, scene_discharge *d, 
 static int parse_sound(const cJSON *obj, const char *base, fg_sound_params *p, char *err,
                        size_t err_size)
 {
-    return json_number(obj, base, "T0", (json_range){0, 0.1, .lo_open = true}, &p->t0_s, err,
+    return json_number(obj, base, "T0", (number_range){0, 0.1, .lo_open = true}, &p->t0_s, err,
                        err_size) ||
-           json_number(obj, base, "r0", (json_range){0, 1000, .lo_open = true}, &p->r0_m, err,
+           json_number(obj, base, "r0", (number_range){0, 1000, .lo_open = true}, &p->r0_m, err,
                        err_size) ||
-           json_number(obj, base, "ps0", (json_range){0, 1e7, .lo_open = true}, &p->ps0_pa, err,
+           json_number(obj, base, "ps0", (number_range){0, 1e7, .lo_open = true}, &p->ps0_pa, err,
                        err_size) ||
-           json_number(obj, base, "sigma0", (json_range){.lo = 0, .hi = 10}, &p->sigma0, err,
+           json_number(obj, base, "sigma0", (number_range){.lo = 0, .hi = 10}, &p->sigma0, err,
                        err_size) ||
-           json_number(obj, base, "t0_jitter", (json_range){0, 1, .hi_open = true},
+           json_number(obj, base, "t0_jitter", (number_range){0, 1, .hi_open = true},
                        &p->t0_jitter, err, err_size) ||
-           json_number(obj, base, "return_stroke_speed", (json_range){0, 3e8, .lo_open = true},
+           json_number(obj, base, "return_stroke_speed", (number_range){0, 3e8, .lo_open = true},
                        &p->return_stroke_speed_m_s, err, err_size)
                ? -1
                : 0;
@@ -67,12 +67,13 @@ static int parse_continuous(const cJSON *obj, const char *base, scene_discharge 
     d->continuous = true;
     d->repeat_min_s = 0.010;
     d->repeat_max_s = 0.050;
-    json_range interval = {0, 10, .lo_open = true};
+    number_range interval = {0, 10, .lo_open = true};
     if (json_check_keys(item, path, continuous_keys, err, err_size) ||
         json_number(item, path, "min_interval", interval, &d->repeat_min_s, err, err_size) ||
         json_number(item, path, "max_interval", interval, &d->repeat_max_s, err, err_size) ||
-        json_number(item, path, "duration", (json_range){0, SCENE_MAX_DURATION_S, .lo_open = true},
-                    &d->duration_s, err, err_size))
+        json_number(item, path, "duration",
+                    (number_range){0, SCENE_MAX_DURATION_S, .lo_open = true}, &d->duration_s,
+                    err, err_size))
         return -1;
     if (d->repeat_min_s > d->repeat_max_s) {
         json_path_key(key, sizeof key, path, "min_interval");
@@ -146,13 +147,13 @@ int scene_parse_discharge(const cJSON *item, const char *path, size_t index, con
     json_path_key(key, sizeof key, path, "description");
     if (desc && !cJSON_IsString(desc))
         return json_fail(err, err_size, key, "expected a string");
-    if (json_number(item, path, "time", (json_range){.lo = 0, .hi = SCENE_MAX_DURATION_S},
+    if (json_number(item, path, "time", (number_range){.lo = 0, .hi = SCENE_MAX_DURATION_S},
                     &d->time_s, err, err_size) ||
         parse_preset(item, path, d, err, err_size) ||
         parse_sound(item, path, &d->sound, err, err_size) ||
-        json_number(item, path, "strokes", (json_range){0, FG_MAX_STROKES, .integer = true},
+        json_number(item, path, "strokes", (number_range){0, FG_MAX_STROKES, .integer = true},
                     &strokes, err, err_size) ||
-        json_number(item, path, "seed", (json_range){0, MAX_SEED, .integer = true}, &seed, err,
+        json_number(item, path, "seed", (number_range){0, MAX_SEED, .integer = true}, &seed, err,
                     err_size) ||
         json_vec3(item, path, "offset", d->offset_m, err, err_size))
         return -1;

@@ -86,7 +86,7 @@ static int parse_path(const cJSON *list, scene *s, char *err, size_t err_size)
         poses[i] = default_pose;
         poses[i].time_s = -1;
         if (json_check_keys(item, path, path_pose_keys, err, err_size) ||
-            json_number(item, path, "time", (json_range){.lo = 0, .hi = SCENE_MAX_DURATION_S},
+            json_number(item, path, "time", (number_range){.lo = 0, .hi = SCENE_MAX_DURATION_S},
                         &poses[i].time_s, err, err_size) ||
             parse_pose(item, path, &poses[i], err, err_size))
             goto fail;

@@ -33,26 +33,26 @@ static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_siz
     s->gain = 1;
     s->humidity_pct = 70;
     s->pressure_kpa = 101.325;
-    if (json_number(json, "", "sample_rate", (json_range){8000, 384000, .integer = true}, &rate,
+    if (json_number(json, "", "sample_rate", (number_range){8000, 384000, .integer = true}, &rate,
                     err, err_size) ||
-        json_number(json, "", "channels", (json_range){1, 2, .integer = true}, &channels, err,
+        json_number(json, "", "channels", (number_range){1, 2, .integer = true}, &channels, err,
                     err_size) ||
-        json_number(json, "", "block", (json_range){1, 65536, .integer = true}, &block, err,
+        json_number(json, "", "block", (number_range){1, 65536, .integer = true}, &block, err,
                     err_size) ||
-        json_number(json, "", "duration", (json_range){0, SCENE_MAX_DURATION_S, .lo_open = true},
+        json_number(json, "", "duration", (number_range){0, SCENE_MAX_DURATION_S, .lo_open = true},
                     &s->duration_s, err, err_size) ||
-        json_number(json, "", "seed", (json_range){0, MAX_SEED, .integer = true}, &seed, err,
+        json_number(json, "", "seed", (number_range){0, MAX_SEED, .integer = true}, &seed, err,
                     err_size) ||
-        json_number(json, "", "gain", (json_range){0, 1e9, .lo_open = true}, &s->gain, err,
+        json_number(json, "", "gain", (number_range){0, 1e9, .lo_open = true}, &s->gain, err,
                     err_size) ||
-        json_number(json, "", "speed_of_sound", (json_range){.lo = 100, .hi = 1000}, &speed, err,
+        json_number(json, "", "speed_of_sound", (number_range){.lo = 100, .hi = 1000}, &speed, err,
                     err_size) ||
-        json_number(json, "", "temperature_c", (json_range){.lo = -70, .hi = 60}, &temp, err,
+        json_number(json, "", "temperature_c", (number_range){.lo = -70, .hi = 60}, &temp, err,
                     err_size) ||
-        json_number(json, "", "humidity", (json_range){0, 100, .lo_open = true}, &s->humidity_pct,
+        json_number(json, "", "humidity", (number_range){0, 100, .lo_open = true}, &s->humidity_pct,
                     err, err_size) ||
-        json_number(json, "", "pressure", (json_range){.lo = 10, .hi = 200}, &s->pressure_kpa, err,
-                    err_size))
+        json_number(json, "", "pressure", (number_range){.lo = 10, .hi = 200}, &s->pressure_kpa,
+                    err, err_size))
         return -1;
     const cJSON *prop = cJSON_GetObjectItemCaseSensitive(json, "propagation");
     if (prop && scene_parse_propagation(prop, "propagation", &s->propagation, err, err_size))

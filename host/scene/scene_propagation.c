@@ -42,7 +42,7 @@ static int parse_refraction(const cJSON *obj, const char *base, fg_propagation *
     p->refraction_radius_m = on ? FG_REFRACTION_STORM_M : 0;
     return on && cJSON_IsObject(item)
                ? json_number(item, path, "radius",
-                             (json_range){.lo = FG_REFRACTION_MIN_M, .hi = FG_REFRACTION_MAX_M},
+                             (number_range){.lo = FG_REFRACTION_MIN_M, .hi = FG_REFRACTION_MAX_M},
                              &p->refraction_radius_m, err, err_size)
                : 0;
 }
@@ -60,9 +60,10 @@ static int parse_turbulence(const cJSON *obj, const char *base, fg_propagation *
     p->turbulence_s = on ? FG_TURBULENCE_DEFAULT_S : 0;
     p->turbulence_length_m = on ? FG_TURBULENCE_DEFAULT_LENGTH_M : 0;
     return on && cJSON_IsObject(item)
-               ? json_number(item, path, "amplitude", (json_range){0, 1, .lo_open = true, .hi_open = true},
+               ? json_number(item, path, "amplitude",
+                             (number_range){0, 1, .lo_open = true, .hi_open = true},
                              &p->turbulence_s, err, err_size) ||
-                         json_number(item, path, "length", (json_range){0, 1e5, .lo_open = true},
+                         json_number(item, path, "length", (number_range){0, 1e5, .lo_open = true},
                                      &p->turbulence_length_m, err, err_size)
                      ? -1
                      : 0
@@ -100,7 +101,7 @@ static int parse_absorption(const cJSON *obj, const char *base, fg_propagation *
     if (!model)
         return json_fail(err, err_size, key, "required (\"off\", \"iso9613\" or \"abe_fir\")");
     return absorption_name(model, key, &p->absorption, err, err_size) ||
-                   json_number(item, path, "distance", (json_range){0, 1e6, .lo_open = true},
+                   json_number(item, path, "distance", (number_range){0, 1e6, .lo_open = true},
                                &p->abe_fir_distance_m, err, err_size)
                ? -1
                : 0;
@@ -118,7 +119,7 @@ static int parse_ground(const cJSON *obj, const char *base, fg_propagation *p, c
         return item ? -1 : 0;
     p->ground_reflection = on ? FG_GROUND_DEFAULT_REFLECTION : 0;
     return on && cJSON_IsObject(item)
-               ? json_number(item, path, "reflection", (json_range){0, 1, .lo_open = true},
+               ? json_number(item, path, "reflection", (number_range){0, 1, .lo_open = true},
                              &p->ground_reflection, err, err_size)
                : 0;
 }

@@ -110,14 +110,14 @@ int scene_parse_random(cJSON *json, scene *s, char *err, size_t err_size)
         return json_fail(err, err_size, "random", "expected an object");
     double rate = 0, start = 0, end = s->duration_s, seed = -1;
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-    if (json_number(item, "random", "rate_hz", (json_range){0, 1000, .lo_open = true}, &rate, err,
+    if (json_number(item, "random", "rate_hz", (number_range){0, 1000, .lo_open = true}, &rate, err,
                     err_size) ||
-        json_number(item, "random", "start", (json_range){.lo = 0, .hi = SCENE_MAX_DURATION_S}, &start, err,
-                    err_size) ||
-        json_number(item, "random", "end", (json_range){0, SCENE_MAX_DURATION_S, .lo_open = true},
+        json_number(item, "random", "start", (number_range){.lo = 0, .hi = SCENE_MAX_DURATION_S},
+                    &start, err, err_size) ||
+        json_number(item, "random", "end", (number_range){0, SCENE_MAX_DURATION_S, .lo_open = true},
                     &end, err, err_size) ||
-        json_number(item, "random", "seed", (json_range){0, MAX_SEED, .integer = true}, &seed, err,
-                    err_size) ||
+        json_number(item, "random", "seed", (number_range){0, MAX_SEED, .integer = true}, &seed,
+                    err, err_size) ||
         parse_region(cJSON_GetObjectItemCaseSensitive(item, "region"), lo, hi, err, err_size))
         return -1;
     if (rate == 0)

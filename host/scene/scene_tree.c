@@ -7,9 +7,9 @@
 static const char *const tree_keys[] = {"nodes", NULL};
 
 /* Coordinates are metres; anything beyond 10 000 km is a mistake. */
-static const json_range coordinate = {.lo = -1e7, .hi = 1e7};
-static const json_range parent_index = {-1, INT32_MAX, .integer = true};
-static const json_range main_flag = {0, 1, .integer = true};
+static const number_range coordinate = {.lo = -1e7, .hi = 1e7};
+static const number_range parent_index = {-1, INT32_MAX, .integer = true};
+static const number_range main_flag = {0, 1, .integer = true};
 
 static int parse_node(const cJSON *item, const char *path, fg_node *node, char *err,
                       size_t err_size)
@@ -23,7 +23,7 @@ static int parse_node(const cJSON *item, const char *path, fg_node *node, char *
     int k = 0;
     for (const cJSON *c = item->child; c; c = c->next, k++) {
         json_path_index(elem, sizeof elem, path, (size_t)k);
-        json_range r = k < 3 ? coordinate : k == 3 ? parent_index : main_flag;
+        number_range r = k < 3 ? coordinate : k == 3 ? parent_index : main_flag;
         if (json_number_value(c, elem, r, &v[k], err, err_size))
             return -1;
     }
