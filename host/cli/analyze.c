@@ -4,9 +4,9 @@
 #include <sndfile.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "common/commands.h"
+#include "common/options.h"
 #include "common/temp_file.h"
 #include "envelope.h"
 #include "spectrogram.h"
@@ -14,12 +14,10 @@
 #define ENVELOPE_POINTS 2000
 #define P_REF_PA 20e-6
 
-static const char usage[] =
-    "usage: fulgur analyze IN.wav [--waveform W.dat] [--spectrogram S.dat]\n"
-    "Prints the peak and RMS pressure. --waveform writes a min/max envelope\n"
-    "(time_s, then min and max in Pa per channel); --spectrogram writes\n"
-    "\"time_s freq_hz level_db\" (dB re 20 uPa, 1/24-octave bands, channel 0), one block\n"
-    "per time slice. Exit: 0 done, 1 runtime error, 2 bad arguments or unreadable input.\n";
+static const char about[] = "Prints the peak and RMS pressure of a WAV.\n";
+
+static const char notes[] =
+    "Exit: 0 done, 1 runtime error, 2 bad arguments or unreadable input.\n";
 
 typedef struct audio {
     float *samples; /* interleaved */
@@ -100,25 +98,20 @@ static void print_levels(const char *path, const audio *a)
 int analyze_main(int argc, char **argv)
 {
     const char *in = NULL, *wave = NULL, *spec = NULL;
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(usage, stdout);
-            return CLI_OK;
-        } else if (strcmp(argv[i], "--waveform") == 0 && i + 1 < argc) {
-            wave = argv[++i];
-        } else if (strcmp(argv[i], "--spectrogram") == 0 && i + 1 < argc) {
-            spec = argv[++i];
-        } else if (argv[i][0] != '-' && !in) {
-            in = argv[i];
-        } else {
-            fprintf(stderr, "fulgur analyze: unexpected argument \"%s\"\n%s", argv[i], usage);
-            return CLI_USAGE;
-        }
-    }
-    if (!in) {
-        fputs(usage, stderr);
-        return CLI_USAGE;
-    }
+    const option table[] = {
+        {"--waveform", OPTION_TEXT, &wave, "W.dat",
+         .help = "write a min/max envelope: time_s, then min and max in Pa per\n"
+                 "channel"},
+        {"--spectrogram", OPTION_TEXT, &spec, "S.dat",
+         .help = "write \"time_s freq_hz level_db\" rows (dB re 20 uPa, 1/24-octave\n"
+                 "bands, channel 0), a blank line after each time slice"},
+        {NULL},
+    };
+    const command_line cl = {"fulgur analyze", "IN.wav", 1, 1, about, notes, table};
+    size_t operands;
+    options_result parsed = options_parse(&cl, argc, argv, &in, &operands);
+    if (parsed != OPTIONS_OK)
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
     audio a;
     if (read_wav(in, &a) != 0)
         return CLI_USAGE;

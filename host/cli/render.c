@@ -1,17 +1,15 @@
 /* fulgur render: a scene through the real-time engine, block by block, into
  * a 32-bit float WAV. The engine is driven exactly as a device callback
  * would drive it; nothing else synthesizes sound. */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <math.h>
-#include <stdbool.h>
 #include <sndfile.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
-#include <time.h>
 
 #include "common/audio_file.h"
+#include "common/clock.h"
 #include "common/commands.h"
+#include "common/options.h"
 #include "common/temp_file.h"
 #include "scene/scene.h"
 #ifdef FULGUR_HAVE_GPU
@@ -22,12 +20,11 @@
  * prepares them off the audio path, as a simulation thread would. */
 #define POST_LEAD_S 0.5
 
-static const char usage[] =
-    "usage: fulgur render SCENE.json -o OUT.wav [--png OUT.png [--png-time SECONDS]]\n"
+static const char about[] =
     "Renders the scene (docs/scene-format.md) through fg_engine_render in blocks of the\n"
-    "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n"
-    "--png also draws the discharges (docs/picture.md) from the scene's \"camera\" at the\n"
-    "first return stroke, or at --png-time, into a PNG (needs gpu/: FULGUR_GPU).\n"
+    "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n";
+
+static const char notes[] =
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
 
 typedef struct render_job {
@@ -40,13 +37,6 @@ typedef struct render_job {
     SNDFILE *wav;
     size_t segments;
 } render_job;
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static int create_engine(render_job *job, char *err, size_t err_size)
 {
@@ -170,7 +160,7 @@ static int render_file(const scene *s, const char *out_path)
     render_job job = {.s = s};
     temp_file out;
     uint64_t frames = 0;
-    double t0 = now_s();
+    uint64_t t0 = monotonic_now_ns();
     int ok = create_engine(&job, err, sizeof err) == 0 &&
              temp_file_open(&out, out_path, err, sizeof err) == 0;
     if (!ok) {
@@ -194,7 +184,8 @@ static int render_file(const scene *s, const char *out_path)
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
     }
-    double wall = now_s() - t0, seconds = (double)frames / s->sample_rate_hz;
+    double wall = (double)(monotonic_now_ns() - t0) * 1e-9;
+    double seconds = (double)frames / s->sample_rate_hz;
     printf("%s: %zu discharges, %zu segments, %.3f s of sound (%u ch, %.0f Hz) in %.3f s wall, "
            "%llu late events (%llu late samples)\n",
            out_path, s->discharge_count, job.segments, seconds, (unsigned)s->channels,
@@ -206,40 +197,28 @@ static int render_file(const scene *s, const char *out_path)
 int render_main(int argc, char **argv)
 {
     const char *scene_path = NULL, *out_path = NULL, *png_path = NULL;
-    bool has_png_time = false;
-    double png_time = 0;
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(usage, stdout);
-            return CLI_OK;
-        } else if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) {
-            out_path = argv[++i];
-        } else if (strcmp(argv[i], "--png") == 0 && i + 1 < argc) {
-            png_path = argv[++i];
-        } else if (strcmp(argv[i], "--png-time") == 0 && i + 1 < argc) {
-            char *end = NULL;
-            png_time = strtod(argv[++i], &end);
-            if (end == argv[i] || *end || !isfinite(png_time)) {
-                fprintf(stderr, "fulgur render: --png-time: \"%s\" is not a finite number of "
-                                "seconds\n", argv[i]);
-                return CLI_USAGE;
-            }
-            has_png_time = true;
-        } else if (argv[i][0] != '-' && !scene_path) {
-            scene_path = argv[i];
-        } else {
-            fprintf(stderr, "fulgur render: unexpected argument \"%s\"\n%s", argv[i], usage);
-            return CLI_USAGE;
-        }
-    }
-    if (!scene_path || !out_path || (has_png_time && !png_path)) {
-        fputs(usage, stderr);
-        return CLI_USAGE;
-    }
+    double png_time = NAN; /* NAN: not given (the parser takes finite numbers only) */
+    const option table[] = {
+        {"-o", OPTION_TEXT, &out_path, "OUT.wav", .help = "the WAV to write", .required = true},
+        {"--png", OPTION_TEXT, &png_path, "OUT.png",
+         .help = "also draw the discharges (docs/picture.md) from the scene's\n"
+                 "\"camera\" into a PNG (needs gpu/: FULGUR_GPU)"},
+        {"--png-time", OPTION_NUMBER, &png_time, "SECONDS",
+         .help = "the picture's time (default: the first return stroke)",
+         .range = {-INFINITY, INFINITY}},
+        {NULL},
+    };
+    const command_line cl = {"fulgur render", "SCENE.json", 1, 1, about, notes, table};
+    size_t operands;
+    options_result parsed = options_parse(&cl, argc, argv, &scene_path, &operands);
+    if (parsed == OPTIONS_OK && !isnan(png_time) && !png_path)
+        parsed = options_fail(&cl, "--png-time needs --png");
+    if (parsed != OPTIONS_OK)
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
 #ifndef FULGUR_HAVE_GPU
     if (png_path) {
-        fprintf(stderr, "fulgur render: --png needs the picture, and this fulgur was built "
-                        "without gpu/ (configure with -DFULGUR_GPU=ON, libepoxy, EGL, libpng)\n");
+        options_fail(&cl, "--png needs the picture, and this fulgur was built without gpu/ "
+                          "(configure with -DFULGUR_GPU=ON, libepoxy, EGL, libpng)");
         return CLI_USAGE;
     }
 #endif
@@ -257,12 +236,10 @@ int render_main(int argc, char **argv)
     int rc = render_file(&s, out_path);
 #ifdef FULGUR_HAVE_GPU
     if (rc == CLI_OK && png_path &&
-        render_picture(&s, png_path, has_png_time, png_time, err, sizeof err) != 0) {
+        render_picture(&s, png_path, png_time, err, sizeof err) != 0) {
         fprintf(stderr, "fulgur: %s\n", err);
         rc = CLI_RUNTIME;
     }
-#else
-    (void)png_time;
 #endif
     scene_deinit(&s);
     return rc;

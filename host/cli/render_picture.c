@@ -1,5 +1,6 @@
 /* fulgur render --png: the scene's discharges as gpu/ draws them, each a
  * flash at its emit time with the stroke times the engine will use. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,11 +35,10 @@ static int add_flashes(fgg_picture *pic, const scene *s, char *err, size_t err_s
     return 0;
 }
 
-int render_picture(const scene *s, const char *path, bool has_time, double time_s, char *err,
-                   size_t err_size)
+int render_picture(const scene *s, const char *path, double time_s, char *err, size_t err_size)
 {
     double t = time_s;
-    if (!has_time) {
+    if (isnan(t)) {
         t = s->discharges[0].time_s;
         for (size_t i = 1; i < s->discharge_count; i++)
             if (s->discharges[i].time_s < t)

@@ -6,16 +6,17 @@
 #include "audio_driver.h"
 #include "audio_file.h"
 
-int audio_driver_parse(const char *text, audio_driver_kind *kind, const char **wav_path)
+int audio_output_parse(const char *text, void *output, char *why, size_t why_size)
 {
+    audio_output *out = output;
     if (strcmp(text, "null") == 0) {
-        *kind = AUDIO_DRIVER_NULL;
+        *out = (audio_output){AUDIO_DRIVER_NULL, NULL};
     } else if (strcmp(text, "raw:-") == 0) {
-        *kind = AUDIO_DRIVER_RAW;
+        *out = (audio_output){AUDIO_DRIVER_RAW, NULL};
     } else if (strncmp(text, "wav:", 4) == 0 && text[4]) {
-        *kind = AUDIO_DRIVER_WAV;
-        *wav_path = text + 4;
+        *out = (audio_output){AUDIO_DRIVER_WAV, text + 4};
     } else {
+        snprintf(why, why_size, "expected null, wav:FILE or raw:-");
         return -1;
     }
     return 0;
@@ -27,10 +28,12 @@ const char *audio_driver_name(audio_driver_kind kind)
     return names[kind];
 }
 
-int audio_driver_start(audio_driver *d, audio_driver_kind kind, const char *path,
-                       double rate_hz, uint32_t channels, uint32_t block_frames, float gain,
-                       char *err, size_t err_size)
+int audio_driver_start(audio_driver *d, const audio_output *out, double rate_hz,
+                       uint32_t channels, uint32_t block_frames, float gain, char *err,
+                       size_t err_size)
 {
+    audio_driver_kind kind = out->kind;
+    const char *path = out->wav_path;
     *d = (audio_driver){.kind = kind, .channels = channels, .gain = gain};
     if (kind == AUDIO_DRIVER_NULL)
         return 0;

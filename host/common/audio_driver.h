@@ -31,19 +31,26 @@ typedef struct audio_driver {
     SNDFILE *wav;
 } audio_driver;
 
-/* Reads "null", "wav:FILE" or "raw:-" (the --audio of run and view);
- * *wav_path points into text. Returns 0, or -1 (nothing written). */
-int audio_driver_parse(const char *text, audio_driver_kind *kind, const char **wav_path);
+/* Where a command's sound goes: the --audio of run and view. */
+typedef struct audio_output {
+    audio_driver_kind kind;
+    const char *wav_path; /* AUDIO_DRIVER_WAV: the file */
+} audio_output;
+
+/* Reads "null", "wav:FILE" or "raw:-" into *(audio_output *)output, whose
+ * wav_path then points into text: the option_parse_fn of --audio
+ * (common/options.h). Returns 0, or -1 with what it expects in why
+ * (*output unchanged). */
+int audio_output_parse(const char *text, void *output, char *why, size_t why_size);
 
 /* "null", "wav" or "raw". */
 const char *audio_driver_name(audio_driver_kind kind);
 
-/* Starts the driver for blocks of up to block_frames; path is the WAV's.
- * Returns 0, or -1 with a message in err (nothing is left open).
- * [main-thread] */
-int audio_driver_start(audio_driver *d, audio_driver_kind kind, const char *path,
-                       double rate_hz, uint32_t channels, uint32_t block_frames, float gain,
-                       char *err, size_t err_size);
+/* Starts the driver of out for blocks of up to block_frames. Returns 0,
+ * or -1 with a message in err (nothing is left open). [main-thread] */
+int audio_driver_start(audio_driver *d, const audio_output *out, double rate_hz,
+                       uint32_t channels, uint32_t block_frames, float gain, char *err,
+                       size_t err_size);
 
 /* Writes one block of planar samples. Returns 0, or -1 with a message.
  * [audio-thread] of the lock-step modes; the null driver does nothing. */

@@ -12,9 +12,7 @@ bool number_range_holds(number_range r, double v)
 
 void number_range_format(number_range r, char *buf, size_t size)
 {
-    if (isinf(r.lo) && isinf(r.hi))
-        snprintf(buf, size, "a finite number");
-    else if (!r.lo_open && !r.hi_open)
+    if (!r.lo_open && !r.hi_open)
         snprintf(buf, size, "%.16g..%.16g", r.lo, r.hi);
     else
         snprintf(buf, size, "%c%.16g, %.16g%c", r.lo_open ? '(' : '[', r.lo, r.hi,

@@ -16,7 +16,7 @@ typedef struct number_range {
 bool number_range_holds(number_range r, double v);
 
 /* r for messages: "1..4096" when both ends are closed, "(0, 3600]" and the
- * like when one is open, "a finite number" for the unbounded range. Always
+ * like when one is open, "(-inf, inf)" for the unbounded range. Always
  * NUL-terminated. */
 void number_range_format(number_range r, char *buf, size_t size);
 

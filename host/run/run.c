@@ -11,7 +11,7 @@ static int set_up(run_ctx *run, char *err, size_t err_size)
 {
     const scene *s = run->s;
     size_t n = s->discharge_count ? s->discharge_count : 1;
-    run->paced = run->opt.audio == AUDIO_DRIVER_NULL;
+    run->paced = run->opt.audio.kind == AUDIO_DRIVER_NULL;
     run->block_frames = run->opt.block_frames ? run->opt.block_frames : s->block_frames;
     run->rate_hz = run->opt.rate_hz ? run->opt.rate_hz : s->sample_rate_hz;
     double seconds = run->opt.seconds ? run->opt.seconds : s->duration_s;
@@ -97,7 +97,7 @@ static int write_report(const run_ctx *run, double wall_s, char *err, size_t err
         snprintf(err, err_size, "out of memory");
         return -1;
     }
-    FILE *to = run->opt.audio == AUDIO_DRIVER_RAW ? stderr : stdout;
+    FILE *to = run->opt.audio.kind == AUDIO_DRIVER_RAW ? stderr : stdout;
     if (run->opt.report_path && !(to = fopen(run->opt.report_path, "w"))) {
         snprintf(err, err_size, "%s: cannot create", run->opt.report_path);
         free(text);
@@ -115,9 +115,8 @@ static int run_scene(run_ctx *run)
 {
     char err[512] = "";
     int ok = set_up(run, err, sizeof err) == 0 &&
-             audio_driver_start(&run->driver, run->opt.audio, run->opt.wav_path, run->rate_hz,
-                                run->s->channels, run->block_frames, (float)run->s->gain, err,
-                                sizeof err) == 0;
+             audio_driver_start(&run->driver, &run->opt.audio, run->rate_hz, run->s->channels,
+                                run->block_frames, (float)run->s->gain, err, sizeof err) == 0;
     if (!ok) {
         tear_down(run);
         fprintf(stderr, "fulgur: %s\n", err);
@@ -161,12 +160,10 @@ int run_main(int argc, char **argv)
         fputs("fulgur: out of memory\n", stderr);
         return CLI_RUNTIME;
     }
-    int rc = run_parse_options(argc, argv, &run->opt);
-    if (rc != 0) {
-        if (rc > 0)
-            fputs(run_usage, stdout);
+    options_result parsed = run_parse_options(argc, argv, &run->opt);
+    if (parsed != OPTIONS_OK) {
         free(run);
-        return rc > 0 ? CLI_OK : CLI_USAGE;
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
     }
     char err[512];
     scene s;
@@ -176,7 +173,7 @@ int run_main(int argc, char **argv)
         return CLI_USAGE;
     }
     run->s = &s;
-    rc = run_scene(run);
+    int rc = run_scene(run);
     scene_deinit(&s);
     free(run);
     return rc;

@@ -30,6 +30,7 @@
 #include <stdio.h>
 
 #include "common/audio_driver.h"
+#include "common/options.h"
 #include "run_stats.h"
 #include "scene/scene.h"
 
@@ -45,10 +46,9 @@
 
 typedef struct run_options {
     const char *scene_path;
-    audio_driver_kind audio;
-    const char *wav_path;     /* AUDIO_DRIVER_WAV */
+    audio_output audio;
     uint32_t block_frames;    /* 0: the scene's */
-    double rate_hz;           /* 0: the scene's */
+    uint32_t rate_hz;         /* 0: the scene's */
     double seconds;           /* 0: the scene's duration, else until all have sounded */
     double frame_hz;          /* 90 */
     uint32_t voices;          /* 0: the engine's default (64) */
@@ -108,12 +108,10 @@ typedef struct run_ctx {
     run_hist jitter;          /* wake-up minus deadline, paced only */
 } run_ctx;
 
-/* The --help text. */
-extern const char run_usage[];
-
-/* Reads the arguments after "run" (argv[0]). Returns 0, 1 for --help, or -1
- * with the message and usage printed to stderr. */
-int run_parse_options(int argc, char **argv, run_options *o);
+/* Reads the arguments after "run" (argv[0]) into *o, as options_parse
+ * does (common/options.h): OPTIONS_HELP after the help, OPTIONS_BAD after
+ * the message. */
+options_result run_parse_options(int argc, char **argv, run_options *o);
 
 void *run_frame_thread(void *arg);
 void *run_sim_thread(void *arg);

@@ -117,7 +117,7 @@ char *run_report_json(const run_ctx *run, double wall_s)
     fg_engine_stats st;
     fg_engine_get_stats(run->engine, &st);
     cJSON_AddStringToObject(root, "scene", run->opt.scene_path);
-    cJSON_AddStringToObject(root, "audio", audio_driver_name(run->opt.audio));
+    cJSON_AddStringToObject(root, "audio", audio_driver_name(run->opt.audio.kind));
     cJSON_AddBoolToObject(root, "paced", run->paced);
     cJSON_AddNumberToObject(root, "sample_rate_hz", run->rate_hz);
     cJSON_AddNumberToObject(root, "block_frames", run->block_frames);

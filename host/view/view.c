@@ -132,7 +132,7 @@ static void summary(view *v, uint32_t frames)
 {
     fg_engine_stats st;
     fg_engine_get_stats(v->engine, &st);
-    FILE *to = v->opt.audio == AUDIO_DRIVER_RAW ? stderr : stdout;
+    FILE *to = v->opt.audio.kind == AUDIO_DRIVER_RAW ? stderr : stdout;
     fprintf(to,
             "{\"frames\": %u, \"requests\": %llu, \"posted\": %llu, \"adopted\": %llu, "
             "\"late_events\": %llu, \"audio_frames\": %llu}\n",
@@ -186,8 +186,8 @@ static int view_scene(view *v)
             snprintf(err, sizeof err, "out of memory");
             goto done;
         }
-    if (audio_driver_start(&v->driver, v->opt.audio, v->opt.wav_path, v->rate_hz,
-                           v->s->channels, v->block_frames, (float)v->s->gain, err, sizeof err))
+    if (audio_driver_start(&v->driver, &v->opt.audio, v->rate_hz, v->s->channels,
+                           v->block_frames, (float)v->s->gain, err, sizeof err))
         goto done;
     started = pthread_create(&sim, NULL, view_sim_thread, v) == 0;
     started += started && pthread_create(&audio, NULL, view_audio_thread, v) == 0;
@@ -239,12 +239,10 @@ int view_main(int argc, char **argv)
         fputs("fulgur view: out of memory\n", stderr);
         return CLI_RUNTIME;
     }
-    int rc = view_parse_options(argc, argv, &v->opt);
-    if (rc != 0) {
-        if (rc > 0)
-            fputs(view_usage, stdout);
+    options_result parsed = view_parse_options(argc, argv, &v->opt);
+    if (parsed != OPTIONS_OK) {
         free(v);
-        return rc > 0 ? CLI_OK : CLI_USAGE;
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
     }
     char err[512];
     scene s;
@@ -263,7 +261,7 @@ int view_main(int argc, char **argv)
     v->s = &s;
     pthread_mutex_init(&v->lock, NULL);
     pthread_cond_init(&v->changed, NULL);
-    rc = view_scene(v);
+    int rc = view_scene(v);
     pthread_cond_destroy(&v->changed);
     pthread_mutex_destroy(&v->lock);
     scene_deinit(&s);

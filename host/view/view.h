@@ -29,6 +29,7 @@
 #include <stdint.h>
 
 #include "common/audio_driver.h"
+#include "common/options.h"
 #include "fulgur/gpu.h"
 #include "scene/scene.h"
 
@@ -90,8 +91,7 @@ typedef struct view_request {
 typedef struct view_options {
     const char *scene_path;
     fgg_backend backend;
-    audio_driver_kind audio;
-    const char *wav_path;
+    audio_output audio;
     uint32_t frames;         /* 0: until Esc (window); headless needs a count */
     double fps;              /* 60 */
     int width, height;       /* 960 x 540 */
@@ -133,11 +133,10 @@ typedef struct view {
     fg_result render_result;
 } view;
 
-extern const char view_usage[];
-
-/* Reads the arguments after "view". Returns 0, 1 for --help, or -1 with the
- * message printed to stderr. */
-int view_parse_options(int argc, char **argv, view_options *o);
+/* Reads the arguments after "view" into *o, as options_parse does
+ * (common/options.h): OPTIONS_HELP after the help, OPTIONS_BAD after the
+ * message. */
+options_result view_parse_options(int argc, char **argv, view_options *o);
 
 /* Reads a script: lines "frame N key space|h|c|escape", "frame N click X Y
  * left|right", "frame N drag DX DY", "frame N scroll S"; '#' comments.
