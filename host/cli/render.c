@@ -42,7 +42,7 @@ static int create_engine(render_job *job, char *err, size_t err_size)
 {
     const scene *s = job->s;
     for (size_t i = 0; i < s->discharge_count; i++)
-        job->segments += s->discharges[i].node_count - 1;
+        job->segments += s->discharges[i].post.node_count - 1;
     fg_engine_config cfg;
     scene_engine_config(s, &cfg);
     cfg.max_voices = (uint32_t)s->discharge_count;
@@ -71,11 +71,9 @@ static int post_due(render_job *job, double horizon_s, char *err, size_t err_siz
     for (; job->next < job->s->discharge_count; job->next++) {
         size_t i = job->order[job->next];
         const scene_discharge *d = &job->s->discharges[i];
-        if (d->time_s >= horizon_s)
+        if (d->post.emit_time_s >= horizon_s)
             break;
-        fg_discharge post;
-        scene_discharge_post(d, &post);
-        fg_result r = fg_engine_post(job->engine, &post, NULL);
+        fg_result r = fg_engine_post(job->engine, &d->post, NULL);
         if (r != FG_OK) {
             snprintf(err, err_size, "discharges[%zu]: the engine refused it: %s", i,
                      fg_result_str(r));

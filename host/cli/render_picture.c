@@ -17,15 +17,14 @@ static int add_flashes(fgg_picture *pic, const scene *s, char *err, size_t err_s
 {
     for (size_t i = 0; i < s->discharge_count; i++) {
         const scene_discharge *d = &s->discharges[i];
-        fg_discharge post;
-        scene_discharge_post(d, &post);
         double strokes[FG_MAX_STROKES];
-        uint32_t n = fg_discharge_stroke_offsets(&post, strokes, FG_MAX_STROKES);
-        fgg_flash f = {.nodes = d->nodes, .node_count = d->node_count, .start_s = d->time_s,
-                       .leader_s = d->continuous ? 0 : LEADER_S,
+        uint32_t n = fg_discharge_stroke_offsets(&d->post, strokes, FG_MAX_STROKES);
+        fgg_flash f = {.nodes = d->post.nodes, .node_count = d->post.node_count,
+                       .start_s = d->post.emit_time_s,
+                       .leader_s = d->post.continuous ? 0 : LEADER_S,
                        .stroke_offsets_s = n ? strokes : NULL,
                        .stroke_count = n > FG_MAX_STROKES ? FG_MAX_STROKES : n,
-                       .continuous = d->continuous, .duration_s = d->duration_s};
+                       .continuous = d->post.continuous, .duration_s = d->post.duration_s};
         if (fgg_picture_add(pic, &f, NULL) != FG_OK) {
             snprintf(err, err_size, "discharges[%zu]: the picture refused it: %s", i,
                      fgg_error_message());
@@ -39,10 +38,10 @@ int render_picture(const scene *s, const char *path, double time_s, char *err, s
 {
     double t = time_s;
     if (isnan(t)) {
-        t = s->discharges[0].time_s;
+        t = s->discharges[0].post.emit_time_s;
         for (size_t i = 1; i < s->discharge_count; i++)
-            if (s->discharges[i].time_s < t)
-                t = s->discharges[i].time_s;
+            if (s->discharges[i].post.emit_time_s < t)
+                t = s->discharges[i].post.emit_time_s;
     }
     scene_camera sc;
     scene_camera_framing(s, &sc);

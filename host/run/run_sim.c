@@ -32,21 +32,19 @@ static int post_due(run_ctx *run, uint64_t now, size_t *next)
         const scene_discharge *d = &s->discharges[i];
         /* at the run's end nothing more is rendered: posting would only
          * race the audio thread's stop */
-        if ((double)now < d->time_s * run->rate_hz || now >= run->limit_frames)
+        if ((double)now < d->post.emit_time_s * run->rate_hz || now >= run->limit_frames)
             return 0;
-        fg_discharge post;
-        scene_discharge_post(d, &post);
         uint64_t t0 = monotonic_now_ns();
-        fg_result r = fg_engine_post(run->engine, &post, NULL);
+        fg_result r = fg_engine_post(run->engine, &d->post, NULL);
         run_hist_add(&run->post_call, (double)(monotonic_now_ns() - t0) * 1e-9);
         if (r == FG_OK) {
             size_t k = run->posts++;
             run->post_frame[k] = now;
             run->post_ns[k] = t0;
-            run->post_event_s[k] = d->time_s;
+            run->post_event_s[k] = d->post.emit_time_s;
         } else if (refused_for_room(r)) {
             run->refused++;
-            if ((double)now / run->rate_hz - d->time_s <= RUN_RETRY_LIMIT_S)
+            if ((double)now / run->rate_hz - d->post.emit_time_s <= RUN_RETRY_LIMIT_S)
                 return 0; /* after the next block's collect */
             run->dropped++;
         } else {

@@ -17,8 +17,8 @@ static int generate(const scene *s, size_t index, scene_discharge *d, char *err,
     const cJSON *type = cJSON_GetObjectItemCaseSensitive(d->generator, "type");
     const gen_entry *g = gen_find(type->valuestring);
     fg_listener at;
-    scene_listener_at(s, d->time_s, &at);
-    gen_context ctx = {.seed = d->seed, .speed_of_sound_m_s = s->speed_of_sound_m_s};
+    scene_listener_at(s, d->post.emit_time_s, &at);
+    gen_context ctx = {.seed = d->post.seed, .speed_of_sound_m_s = s->speed_of_sound_m_s};
     for (int k = 0; k < 3; k++)
         ctx.listener_m[k] = at.position[k] - d->offset_m[k];
     fg_tree *tree;
@@ -47,8 +47,8 @@ static int generate(const scene *s, size_t index, scene_discharge *d, char *err,
         free(nodes);
         goto done;
     }
-    d->nodes = nodes;
-    d->node_count = n;
+    d->post.nodes = nodes;
+    d->post.node_count = n;
     rc = 0;
 done:
     fg_tree_destroy(tree);
@@ -58,9 +58,15 @@ done:
 int scene_build_discharge(scene *s, size_t index, char *err, size_t err_size)
 {
     scene_discharge *d = &s->discharges[index];
-    if (!d->generator || d->nodes)
+    if (!d->generator || d->post.nodes)
         return 0;
     return generate(s, index, d, err, err_size);
+}
+
+void scene_discharge_unbuild(scene_discharge *d)
+{
+    if (d->generator)
+        scene_discharge_free_tree(d);
 }
 
 int scene_build(scene *s, char *err, size_t err_size)
@@ -68,13 +74,8 @@ int scene_build(scene *s, char *err, size_t err_size)
     for (size_t i = 0; i < s->discharge_count; i++) {
         if (scene_build_discharge(s, i, err, err_size) == 0)
             continue;
-        for (size_t k = 0; k < i; k++) { /* back to the parsed state */
-            if (s->discharges[k].generator) {
-                free(s->discharges[k].nodes);
-                s->discharges[k].nodes = NULL;
-                s->discharges[k].node_count = 0;
-            }
-        }
+        for (size_t k = 0; k < i; k++) /* back to the parsed state */
+            scene_discharge_unbuild(&s->discharges[k]);
         return -1;
     }
     return 0;

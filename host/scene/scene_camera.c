@@ -57,8 +57,8 @@ void scene_camera_framing(const scene *s, scene_camera *out)
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = 0; i < s->discharge_count; i++) {
         const scene_discharge *d = &s->discharges[i];
-        for (size_t n = 0; n < d->node_count; n++) {
-            const double p[3] = {d->nodes[n].x, d->nodes[n].y, d->nodes[n].z};
+        for (size_t n = 0; n < d->post.node_count; n++) {
+            const double p[3] = {d->post.nodes[n].x, d->post.nodes[n].y, d->post.nodes[n].z};
             for (int k = 0; k < 3; k++) {
                 lo[k] = fmin(lo[k], p[k]);
                 hi[k] = fmax(hi[k], p[k]);

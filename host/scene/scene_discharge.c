@@ -31,7 +31,7 @@ static int parse_preset(const cJSON *obj, const char *base, scene_discharge *d, 
     if (fg_preset_from_name(item->valuestring, &d->preset) != FG_OK)
         return json_fail(err, err_size, path, "unknown preset \"%s\" (%s)", item->valuestring,
                          names);
-    if (fg_preset_sound(d->preset, &d->sound) != FG_OK)
+    if (fg_preset_sound(d->preset, &d->post.sound) != FG_OK)
         return json_fail(err, err_size, path, "preset has no sound parameters");
     return 0;
 }
@@ -64,26 +64,26 @@ static int parse_continuous(const cJSON *obj, const char *base, scene_discharge 
         return 0;
     char path[JSON_PATH_MAX], key[JSON_PATH_MAX];
     json_path_key(path, sizeof path, base, "continuous");
-    d->continuous = true;
-    d->repeat_min_s = 0.010;
-    d->repeat_max_s = 0.050;
+    d->post.continuous = 1;
+    d->post.repeat_min_s = 0.010;
+    d->post.repeat_max_s = 0.050;
     number_range interval = {0, 10, .lo_open = true};
     if (json_check_keys(item, path, continuous_keys, err, err_size) ||
-        json_number(item, path, "min_interval", interval, &d->repeat_min_s, err, err_size) ||
-        json_number(item, path, "max_interval", interval, &d->repeat_max_s, err, err_size) ||
+        json_number(item, path, "min_interval", interval, &d->post.repeat_min_s, err, err_size) ||
+        json_number(item, path, "max_interval", interval, &d->post.repeat_max_s, err, err_size) ||
         json_number(item, path, "duration",
-                    (number_range){0, SCENE_MAX_DURATION_S, .lo_open = true}, &d->duration_s,
+                    (number_range){0, SCENE_MAX_DURATION_S, .lo_open = true}, &d->post.duration_s,
                     err, err_size))
         return -1;
-    if (d->repeat_min_s > d->repeat_max_s) {
+    if (d->post.repeat_min_s > d->post.repeat_max_s) {
         json_path_key(key, sizeof key, path, "min_interval");
         return json_fail(err, err_size, key, "%.16g s is above max_interval (%.16g s)",
-                         d->repeat_min_s, d->repeat_max_s);
+                         d->post.repeat_min_s, d->post.repeat_max_s);
     }
-    if (d->strokes > 1) {
+    if (d->post.strokes > 1) {
         json_path_key(key, sizeof key, base, "strokes");
         return json_fail(err, err_size, key, "a continuous discharge has one stroke, not %u",
-                         (unsigned)d->strokes);
+                         (unsigned)d->post.strokes);
     }
     return 0;
 }
@@ -115,9 +115,16 @@ static int parse_source(const cJSON *obj, const char *base, scene_discharge *d, 
     char path[JSON_PATH_MAX];
     json_path_key(path, sizeof path, base, tree ? "tree" : "generator");
     if (tree)
-        return scene_parse_tree(tree, path, d->offset_m, &d->nodes, &d->node_count, err,
-                                err_size);
+        return scene_parse_tree(tree, path, d->offset_m, &d->post.nodes, &d->post.node_count,
+                                err, err_size);
     return parse_generator(gen, path, d, err, err_size);
+}
+
+void scene_discharge_free_tree(scene_discharge *d)
+{
+    free((fg_node *)d->post.nodes);
+    d->post.nodes = NULL;
+    d->post.node_count = 0;
 }
 
 uint64_t scene_discharge_seed(uint64_t scene_seed, size_t index)
@@ -148,28 +155,28 @@ int scene_parse_discharge(const cJSON *item, const char *path, size_t index, con
     if (desc && !cJSON_IsString(desc))
         return json_fail(err, err_size, key, "expected a string");
     if (json_number(item, path, "time", (number_range){.lo = 0, .hi = SCENE_MAX_DURATION_S},
-                    &d->time_s, err, err_size) ||
+                    &d->post.emit_time_s, err, err_size) ||
         parse_preset(item, path, d, err, err_size) ||
-        parse_sound(item, path, &d->sound, err, err_size) ||
+        parse_sound(item, path, &d->post.sound, err, err_size) ||
         json_number(item, path, "strokes", (number_range){0, FG_MAX_STROKES, .integer = true},
                     &strokes, err, err_size) ||
         json_number(item, path, "seed", (number_range){0, MAX_SEED, .integer = true}, &seed, err,
                     err_size) ||
         json_vec3(item, path, "offset", d->offset_m, err, err_size))
         return -1;
-    d->strokes = (uint32_t)strokes;
-    d->seed = seed >= 0 ? (uint64_t)seed : scene_discharge_seed(s->seed, index);
-    d->propagation = s->propagation;
+    d->post.strokes = (uint32_t)strokes;
+    d->post.seed = seed >= 0 ? (uint64_t)seed : scene_discharge_seed(s->seed, index);
+    d->post.propagation = s->propagation;
     const cJSON *prop = cJSON_GetObjectItemCaseSensitive(item, "propagation");
     json_path_key(key, sizeof key, path, "propagation");
-    if (prop && scene_parse_propagation(prop, key, &d->propagation, err, err_size))
+    if (prop && scene_parse_propagation(prop, key, &d->post.propagation, err, err_size))
         return -1;
     const cJSON *model = cJSON_GetObjectItemCaseSensitive(item, "model");
     json_path_key(key, sizeof key, path, "model");
     if (model && !(cJSON_IsString(model) && (strcmp(model->valuestring, "wm") == 0 ||
                                              strcmp(model->valuestring, "abe") == 0)))
         return json_fail(err, err_size, key, "expected \"wm\" (Matsuyama) or \"abe\" (Abe et al.)");
-    d->model = model && strcmp(model->valuestring, "abe") == 0 ? FG_MODEL_ABE : FG_MODEL_WM;
+    d->post.model = model && strcmp(model->valuestring, "abe") == 0 ? FG_MODEL_ABE : FG_MODEL_WM;
     return parse_continuous(item, path, d, err, err_size) ||
                    parse_source(item, path, d, err, err_size)
                ? -1

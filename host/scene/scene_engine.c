@@ -1,5 +1,5 @@
-/* A scene as the engine takes it: its configuration, its discharges as
- * posts, and the order they are posted in. */
+/* A scene as the engine takes it: its configuration and the order its
+ * discharges are posted in. */
 #include <stdlib.h>
 
 #include "scene.h"
@@ -14,24 +14,6 @@ void scene_engine_config(const scene *s, fg_engine_config *out)
         .air_temperature_k = s->temperature_c + 273.15,
         .air_humidity_pct = s->humidity_pct,
         .air_pressure_kpa = s->pressure_kpa,
-    };
-}
-
-void scene_discharge_post(const scene_discharge *d, fg_discharge *out)
-{
-    *out = (fg_discharge){
-        .nodes = d->nodes,
-        .node_count = d->node_count,
-        .sound = d->sound,
-        .emit_time_s = d->time_s,
-        .strokes = d->strokes,
-        .continuous = d->continuous,
-        .repeat_min_s = d->repeat_min_s,
-        .repeat_max_s = d->repeat_max_s,
-        .duration_s = d->duration_s,
-        .seed = d->seed,
-        .propagation = d->propagation,
-        .model = d->model,
     };
 }
 
@@ -60,7 +42,7 @@ size_t *scene_post_order(const scene *s)
         return NULL;
     }
     for (size_t i = 0; i < n; i++)
-        slots[i] = (post_slot){s->discharges[i].time_s, i};
+        slots[i] = (post_slot){s->discharges[i].post.emit_time_s, i};
     qsort(slots, n, sizeof *slots, by_time);
     for (size_t i = 0; i < n; i++)
         order[i] = slots[i].index;

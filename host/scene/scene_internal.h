@@ -17,6 +17,10 @@ int scene_parse_camera(const cJSON *item, scene *s, char *err, size_t err_size);
 int scene_parse_discharge(const cJSON *item, const char *path, size_t index, const scene *s,
                           scene_discharge *out, char *err, size_t err_size);
 
+/* Frees d's tree (the scene owns it; fg_discharge's pointer is const only
+ * towards the engine) and sets it to none. */
+void scene_discharge_free_tree(scene_discharge *d);
+
 /* "propagation" at path (an object) over *p, which holds the defaults:
  * the keys present replace their effect's settings. */
 int scene_parse_propagation(const cJSON *item, const char *path, fg_propagation *p, char *err,
@@ -25,7 +29,7 @@ int scene_parse_propagation(const cJSON *item, const char *path, fg_propagation 
 /* "tree" at path: reads the nodes, adds offset_m and checks the tree into
  * *nodes (caller frees) and *count. */
 int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[3],
-                     fg_node **nodes, size_t *count, char *err, size_t err_size);
+                     const fg_node **nodes, size_t *count, char *err, size_t err_size);
 
 /* fg_tree_check with the fault described at nodes_path ("...nodes[7]: ..."). */
 int scene_check_tree(const fg_node *nodes, size_t count, const char *nodes_path, char *err,

@@ -106,15 +106,15 @@ static int check_duration(const scene *s, char *err, size_t err_size)
     char item[JSON_PATH_MAX], path[JSON_PATH_MAX];
     for (size_t i = 0; i < s->discharge_count; i++) {
         const scene_discharge *d = &s->discharges[i];
-        if (s->duration_s == 0 && d->continuous && d->duration_s == 0)
+        if (s->duration_s == 0 && d->post.continuous && d->post.duration_s == 0)
             return json_fail(err, err_size, "duration",
                              "required, since discharges[%zu] is continuous without a duration",
                              i);
-        if (s->duration_s > 0 && d->time_s >= s->duration_s) {
+        if (s->duration_s > 0 && d->post.emit_time_s >= s->duration_s) {
             json_path_index(item, sizeof item, "discharges", i);
             json_path_key(path, sizeof path, item, "time");
             return json_fail(err, err_size, path, "%.16g s is not before the scene's end (%.16g s)",
-                             d->time_s, s->duration_s);
+                             d->post.emit_time_s, s->duration_s);
         }
     }
     return 0;
@@ -187,7 +187,7 @@ void scene_deinit(scene *s)
     if (!s)
         return;
     for (size_t i = 0; i < s->discharge_count; i++)
-        free(s->discharges[i].nodes);
+        scene_discharge_free_tree(&s->discharges[i]);
     free(s->discharges);
     free(s->poses);
     cJSON_Delete(s->json);

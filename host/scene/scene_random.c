@@ -80,24 +80,26 @@ static int instantiate(const scene_discharge *tpl, double t, const double shift[
                        scene_discharge *out)
 {
     *out = *tpl;
-    out->time_s = t;
-    out->seed = seed;
+    out->post.emit_time_s = t;
+    out->post.seed = seed;
     for (int k = 0; k < 3; k++)
         out->offset_m[k] += shift[k];
-    out->nodes = NULL;
-    out->node_count = 0;
-    if (!tpl->nodes)
+    out->post.nodes = NULL;
+    out->post.node_count = 0;
+    if (!tpl->post.nodes)
         return 0; /* a generator: scene_build applies the offset */
-    out->nodes = malloc(tpl->node_count * sizeof *out->nodes);
-    if (!out->nodes)
+    size_t n = tpl->post.node_count;
+    fg_node *nodes = malloc(n * sizeof *nodes);
+    if (!nodes)
         return -1;
-    memcpy(out->nodes, tpl->nodes, tpl->node_count * sizeof *out->nodes);
-    for (size_t i = 0; i < tpl->node_count; i++) {
-        out->nodes[i].x += shift[0];
-        out->nodes[i].y += shift[1];
-        out->nodes[i].z += shift[2];
+    memcpy(nodes, tpl->post.nodes, n * sizeof *nodes);
+    for (size_t i = 0; i < n; i++) {
+        nodes[i].x += shift[0];
+        nodes[i].y += shift[1];
+        nodes[i].z += shift[2];
     }
-    out->node_count = tpl->node_count;
+    out->post.nodes = nodes;
+    out->post.node_count = n;
     return 0;
 }
 
@@ -138,8 +140,8 @@ int scene_parse_random(cJSON *json, scene *s, char *err, size_t err_size)
     scene_discharge tpl = {0};
     if (parse_template(json, item, s, &tpl, err, err_size))
         return -1;
-    if (tpl.continuous && tpl.duration_s == 0) {
-        free(tpl.nodes);
+    if (tpl.post.continuous && tpl.post.duration_s == 0) {
+        scene_discharge_free_tree(&tpl);
         return json_fail(err, err_size, "random.continuous.duration",
                          "required: a random continuous discharge must end");
     }
@@ -171,6 +173,6 @@ int scene_parse_random(cJSON *json, scene *s, char *err, size_t err_size)
         }
         s->discharge_count = base + ++n;
     }
-    free(tpl.nodes);
+    scene_discharge_free_tree(&tpl);
     return rc;
 }

@@ -46,7 +46,7 @@ int scene_check_tree(const fg_node *nodes, size_t count, const char *nodes_path,
 }
 
 int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[3],
-                     fg_node **nodes, size_t *count, char *err, size_t err_size)
+                     const fg_node **nodes, size_t *count, char *err, size_t err_size)
 {
     char list_path[JSON_PATH_MAX], node_path[JSON_PATH_MAX];
     json_path_key(list_path, sizeof list_path, path, "nodes");

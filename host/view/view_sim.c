@@ -63,20 +63,18 @@ static int grow(view *v, view_request *q)
     if (q->charge_count == 0) {
         scene_discharge *d = &v->s->discharges[0];
         if (d->generator) { /* a new tree for each discharge */
-            free(d->nodes);
-            d->nodes = NULL;
-            d->node_count = 0;
-            d->seed = q->seed;
+            scene_discharge_unbuild(d);
+            d->post.seed = q->seed;
             if (scene_build_discharge(v->s, 0, q->error, sizeof q->error) != 0)
                 return -1;
         }
-        q->nodes = malloc(d->node_count * sizeof *q->nodes);
+        q->nodes = malloc(d->post.node_count * sizeof *q->nodes);
         if (!q->nodes) {
             snprintf(q->error, sizeof q->error, "out of memory");
             return -1;
         }
-        memcpy(q->nodes, d->nodes, d->node_count * sizeof *q->nodes);
-        q->node_count = d->node_count;
+        memcpy(q->nodes, d->post.nodes, d->post.node_count * sizeof *q->nodes);
+        q->node_count = d->post.node_count;
         return 0;
     }
     fg_tree *tree;
@@ -107,8 +105,7 @@ static void answer(view *v, view_request *q, fg_voice_id *held)
     }
     if (grow(v, q) != 0)
         return;
-    fg_discharge post;
-    scene_discharge_post(&v->s->discharges[0], &post);
+    fg_discharge post = v->s->discharges[0].post;
     post.nodes = q->nodes;
     post.node_count = q->node_count;
     post.seed = q->seed;
@@ -117,9 +114,7 @@ static void answer(view *v, view_request *q, fg_voice_id *held)
     if (q->kind == VIEW_REQ_HOLD) {
         post.continuous = 1;
         post.strokes = 1;
-        post.duration_s = 0; /* until H again */
-        if (!(post.repeat_min_s > 0))
-            post.repeat_min_s = 0.010, post.repeat_max_s = 0.050;
+        post.duration_s = 0; /* until H again; the scene's repeat, else the engine's */
     }
     q->continuous = post.continuous;
     q->stroke_count = fg_discharge_stroke_offsets(&post, q->strokes_s, FG_MAX_STROKES);
