@@ -5,8 +5,6 @@
 #include <string.h>
 
 #include "generator.h"
-#include "generator_field.h"
-#include "generator_lightning.h"
 
 static const gen_entry table[] = {
     {"lightning", gen_lightning},

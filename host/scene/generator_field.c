@@ -8,7 +8,6 @@
 
 #include "fulgur/fulgur.h"
 #include "generator.h"
-#include "generator_field.h"
 #ifdef FULGUR_HOST_GPU
 #include "generator_field_gpu.h"
 #endif

@@ -6,7 +6,7 @@
 
 #include "fulgur/charges.h"
 #include "fulgur/lightning.h"
-#include "generator_lightning.h"
+#include "generator.h"
 #include "json_read.h"
 
 static const number_range positive = {0, 1e7, true, false, false};
