@@ -87,6 +87,18 @@ void run_publish_engine(run_ctx *run, uint64_t frames)
     publish(run, &run->gate.engine_frames, frames, NULL);
 }
 
+void run_wait_pose(run_ctx *run, uint64_t frames)
+{
+    if (run->paced)
+        return;
+    run_gate *g = &run->gate;
+    uint64_t tick = run_tick_at(run, frames);
+    pthread_mutex_lock(&g->lock);
+    while (!atomic_load(&run->stop) && (!g->frame_started || g->frame_tick < tick))
+        pthread_cond_wait(&g->changed, &g->lock);
+    pthread_mutex_unlock(&g->lock);
+}
+
 bool run_wait_inputs(run_ctx *run, uint64_t frames)
 {
     run_gate *g = &run->gate;

@@ -33,4 +33,10 @@ void run_publish_engine(run_ctx *run, uint64_t frames);
  * its posts and its pose. Returns false on stop. */
 bool run_wait_inputs(run_ctx *run, uint64_t frames);
 
+/* Lock-step sim thread, before it posts at engine frame `frames`: waits
+ * until the frame thread has set the pose of the tick in force there, the
+ * pose fg_engine_post places the discharge from (without the wait a post on
+ * a tick's first block raced the new pose). No-op when paced. */
+void run_wait_pose(run_ctx *run, uint64_t frames);
+
 #endif

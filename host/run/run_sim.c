@@ -34,6 +34,7 @@ static int post_due(run_ctx *run, uint64_t now, size_t *next)
          * race the audio thread's stop */
         if ((double)now < d->post.emit_time_s * run->rate_hz || now >= run->limit_frames)
             return 0;
+        run_wait_pose(run, now);
         uint64_t t0 = monotonic_now_ns();
         fg_result r = fg_engine_post(run->engine, &d->post, NULL);
         run_hist_add(&run->post_call, (double)(monotonic_now_ns() - t0) * 1e-9);
