@@ -155,26 +155,26 @@ static int run_scene(run_ctx *run)
 
 int run_main(int argc, char **argv)
 {
-    run_ctx *run = calloc(1, sizeof *run);
-    if (!run) {
-        fputs("fulgur: out of memory\n", stderr);
-        return CLI_RUNTIME;
-    }
-    options_result parsed = run_parse_options(argc, argv, &run->opt);
-    if (parsed != OPTIONS_OK) {
-        free(run);
+    run_options opt;
+    options_result parsed = run_parse_options(argc, argv, &opt);
+    if (parsed != OPTIONS_OK)
         return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
-    }
     char err[512];
     scene s;
-    if (scene_load(run->opt.scene_path, &s, err, sizeof err) != 0) {
+    if (scene_load(opt.scene_path, &s, err, sizeof err) != 0) {
         fprintf(stderr, "fulgur: %s\n", err);
-        free(run);
         return CLI_USAGE;
     }
-    run->s = &s;
-    int rc = run_scene(run);
-    scene_deinit(&s);
+    int rc = CLI_RUNTIME;
+    run_ctx *run = calloc(1, sizeof *run); /* large: the measurements' state */
+    if (run) {
+        run->opt = opt;
+        run->s = &s;
+        rc = run_scene(run);
+    } else {
+        fputs("fulgur: out of memory\n", stderr);
+    }
     free(run);
+    scene_deinit(&s);
     return rc;
 }

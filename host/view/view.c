@@ -232,32 +232,38 @@ done:
     return rc;
 }
 
+/* The scene, which must have a discharge: the one space triggers. */
+static int load_scene(const char *path, scene *s)
+{
+    char err[512];
+    if (scene_load(path, s, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur view: %s\n", err);
+        return -1;
+    }
+    if (s->discharge_count == 0) {
+        fprintf(stderr, "fulgur view: %s: needs a discharge (the one space triggers)\n", path);
+        scene_deinit(s);
+        return -1;
+    }
+    return 0;
+}
+
 int view_main(int argc, char **argv)
 {
-    view *v = calloc(1, sizeof *v);
+    view_options opt;
+    options_result parsed = view_parse_options(argc, argv, &opt);
+    if (parsed != OPTIONS_OK)
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
+    scene s;
+    if (load_scene(opt.scene_path, &s) != 0)
+        return CLI_USAGE;
+    view *v = calloc(1, sizeof *v); /* large: the rings and the requests' state */
     if (!v) {
         fputs("fulgur view: out of memory\n", stderr);
+        scene_deinit(&s);
         return CLI_RUNTIME;
     }
-    options_result parsed = view_parse_options(argc, argv, &v->opt);
-    if (parsed != OPTIONS_OK) {
-        free(v);
-        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
-    }
-    char err[512];
-    scene s;
-    if (scene_load(v->opt.scene_path, &s, err, sizeof err) != 0) {
-        fprintf(stderr, "fulgur view: %s\n", err);
-        free(v);
-        return CLI_USAGE;
-    }
-    if (s.discharge_count == 0) {
-        fprintf(stderr, "fulgur view: %s: needs a discharge (the one space triggers)\n",
-                v->opt.scene_path);
-        scene_deinit(&s);
-        free(v);
-        return CLI_USAGE;
-    }
+    v->opt = opt;
     v->s = &s;
     pthread_mutex_init(&v->lock, NULL);
     pthread_cond_init(&v->changed, NULL);
