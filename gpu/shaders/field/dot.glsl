@@ -9,7 +9,7 @@ layout(r32f, binding = 1) uniform readonly image3D b;
 layout(std430, binding = 0) writeonly buffer Partials { double partial[]; };
 layout(location = 0) uniform ivec3 n;
 
-shared double s[GROUP];
+#include "group_sum.inc.glsl"
 
 void main()
 {
@@ -25,13 +25,7 @@ void main()
         ivec3 p = ivec3(id % uint(n.x), (id / uint(n.x)) % uint(n.y), id / nxy);
         sum += double(imageLoad(a, p).r) * double(imageLoad(b, p).r);
     }
-    s[lid] = sum;
-    barrier();
-    for (uint w = GROUP / 2; w > 0; w >>= 1) {
-        if (lid < w)
-            s[lid] += s[lid + w];
-        barrier();
-    }
+    double summed = group_sum(sum);
     if (lid == 0)
-        partial[gl_WorkGroupID.x] = s[0];
+        partial[gl_WorkGroupID.x] = summed;
 }

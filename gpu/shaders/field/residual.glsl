@@ -16,10 +16,7 @@ layout(location = 1) uniform vec3 c;
 layout(location = 2) uniform int zero_free;
 layout(location = 3) uniform int has_rhs;
 
-float face(int i, int m)
-{
-    return (i == 0 || i == m - 1) ? 0.5 : 1.0;
-}
+#include "stencil.inc.glsl"
 
 float value(ivec3 q)
 {
@@ -37,15 +34,12 @@ void main()
         imageStore(outv, p, vec4(0.0));
         return;
     }
-    float fx = face(p.x, n.x), fy = face(p.y, n.y), fz = face(p.z, n.z);
-    float cx = c.x * fy * fz, cy = c.y * fx * fz, cz = c.z * fx * fy;
+    float w[6];
+    stencil_weights(p, n, c, w);
     float xc = value(p), ax = 0.0;
-    if (p.x > 0) ax += cx * (xc - value(p - ivec3(1, 0, 0)));
-    if (p.x < n.x - 1) ax += cx * (xc - value(p + ivec3(1, 0, 0)));
-    if (p.y > 0) ax += cy * (xc - value(p - ivec3(0, 1, 0)));
-    if (p.y < n.y - 1) ax += cy * (xc - value(p + ivec3(0, 1, 0)));
-    if (p.z > 0) ax += cz * (xc - value(p - ivec3(0, 0, 1)));
-    if (p.z < n.z - 1) ax += cz * (xc - value(p + ivec3(0, 0, 1)));
+    for (int k = 0; k < 6; k++)
+        if (w[k] > 0.0)
+            ax += w[k] * (xc - value(p + stencil_step[k]));
     float b = has_rhs != 0 ? imageLoad(rhs, p).r : 0.0;
     imageStore(outv, p, vec4(b - ax));
 }

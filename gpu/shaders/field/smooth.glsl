@@ -3,7 +3,6 @@
 // the nodes of one colour ((i + j + k) % 2 == color), in place: a node of
 // one colour reads only neighbours of the other, so the dispatch has no
 // races. x = (rhs + sum c x_nb) / sum c on free nodes; masked nodes keep x.
-// Edges on a box face have half the weight (Neumann), as in laplace.c.
 layout(local_size_x = 8, local_size_y = 4, local_size_z = 4) in;
 layout(r32f, binding = 0) uniform image3D x;
 layout(r32f, binding = 1) uniform readonly image3D rhs;
@@ -13,10 +12,7 @@ layout(location = 1) uniform vec3 c;
 layout(location = 2) uniform int color;
 layout(location = 3) uniform int has_rhs;
 
-float face(int i, int m)
-{
-    return (i == 0 || i == m - 1) ? 0.5 : 1.0;
-}
+#include "stencil.inc.glsl"
 
 void main()
 {
@@ -24,15 +20,15 @@ void main()
     ivec3 p = ivec3(2 * g.x + ((color + g.y + g.z) & 1), g.y, g.z);
     if (any(greaterThanEqual(p, n)) || imageLoad(mask, p).r != 0u)
         return;
-    float fx = face(p.x, n.x), fy = face(p.y, n.y), fz = face(p.z, n.z);
-    float cx = c.x * fy * fz, cy = c.y * fx * fz, cz = c.z * fx * fy;
+    float w[6];
+    stencil_weights(p, n, c, w);
     float d = 0.0, o = 0.0;
-    if (p.x > 0) { d += cx; o += cx * imageLoad(x, p - ivec3(1, 0, 0)).r; }
-    if (p.x < n.x - 1) { d += cx; o += cx * imageLoad(x, p + ivec3(1, 0, 0)).r; }
-    if (p.y > 0) { d += cy; o += cy * imageLoad(x, p - ivec3(0, 1, 0)).r; }
-    if (p.y < n.y - 1) { d += cy; o += cy * imageLoad(x, p + ivec3(0, 1, 0)).r; }
-    if (p.z > 0) { d += cz; o += cz * imageLoad(x, p - ivec3(0, 0, 1)).r; }
-    if (p.z < n.z - 1) { d += cz; o += cz * imageLoad(x, p + ivec3(0, 0, 1)).r; }
+    for (int k = 0; k < 6; k++) {
+        if (w[k] > 0.0) {
+            d += w[k];
+            o += w[k] * imageLoad(x, p + stencil_step[k]).r;
+        }
+    }
     float b = has_rhs != 0 ? imageLoad(rhs, p).r : 0.0;
     imageStore(x, p, vec4((b + o) / d));
 }

@@ -6,7 +6,7 @@ layout(std430, binding = 0) readonly buffer Partials { double partial[]; };
 layout(std430, binding = 1) writeonly buffer Result { double result; };
 layout(location = 0) uniform int count;
 
-shared double s[GROUP];
+#include "group_sum.inc.glsl"
 
 void main()
 {
@@ -14,13 +14,7 @@ void main()
     double sum = 0.0;
     for (int i = int(lid); i < count; i += GROUP)
         sum += partial[i];
-    s[lid] = sum;
-    barrier();
-    for (uint w = GROUP / 2; w > 0; w >>= 1) {
-        if (lid < w)
-            s[lid] += s[lid + w];
-        barrier();
-    }
+    double summed = group_sum(sum);
     if (lid == 0)
-        result = s[0];
+        result = summed;
 }

@@ -1,12 +1,9 @@
 #version 430 core
 // Bright pass at half resolution: a 4-tap box down, then what lies above
 // the threshold, with a soft knee so the cut leaves no edge.
-in vec2 v_uv;
-uniform sampler2D u_src;
-uniform vec2 u_texel;     // 1 / source size
+#include "filter_io.inc.glsl"
 uniform float u_threshold;
 uniform float u_knee;
-out vec4 o_color;
 void main()
 {
     vec3 c = 0.25 * (texture(u_src, v_uv + u_texel * vec2(-0.5, -0.5)).rgb +

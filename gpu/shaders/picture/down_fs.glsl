@@ -1,9 +1,6 @@
 #version 430 core
 // Dual-filter (Kawase) downsample: the centre and four diagonal taps.
-in vec2 v_uv;
-uniform sampler2D u_src;
-uniform vec2 u_texel; // 1 / source size
-out vec4 o_color;
+#include "filter_io.inc.glsl"
 void main()
 {
     vec3 c = 4.0 * texture(u_src, v_uv).rgb;

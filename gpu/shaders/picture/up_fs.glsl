@@ -1,10 +1,7 @@
 #version 430 core
 // Dual-filter (Kawase) upsample: eight taps on a diamond, the result added
 // (by blending) onto the finer level.
-in vec2 v_uv;
-uniform sampler2D u_src;
-uniform vec2 u_texel; // 1 / source size
-out vec4 o_color;
+#include "filter_io.inc.glsl"
 void main()
 {
     vec3 c = texture(u_src, v_uv + u_texel * vec2(-2.0, 0.0)).rgb;
