@@ -22,6 +22,12 @@ int audio_output_parse(const char *text, void *output, char *why, size_t why_siz
     return 0;
 }
 
+option audio_output_option(audio_output *out, const char *help)
+{
+    return (option){"--audio", OPTION_PARSED, out, "null|wav:FILE|raw:-", .help = help,
+                    .parse = audio_output_parse};
+}
+
 const char *audio_driver_name(audio_driver_kind kind)
 {
     static const char *const names[] = {"null", "wav", "raw"};

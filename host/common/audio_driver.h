@@ -14,6 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "options.h"
 #include "temp_file.h"
 
 typedef enum audio_driver_kind {
@@ -42,6 +43,9 @@ typedef struct audio_output {
  * (common/options.h). Returns 0, or -1 with what it expects in why
  * (*output unchanged). */
 int audio_output_parse(const char *text, void *output, char *why, size_t why_size);
+
+/* The --audio option of run and view, read into *out, with its help. */
+option audio_output_option(audio_output *out, const char *help);
 
 /* "null", "wav" or "raw". */
 const char *audio_driver_name(audio_driver_kind kind);

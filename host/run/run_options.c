@@ -19,13 +19,12 @@ options_result run_parse_options(int argc, char **argv, run_options *o)
     static const uint32_t rates[] = {44100, 48000, 96000, 0};
     *o = (run_options){.audio = {AUDIO_DRIVER_NULL, NULL}, .frame_hz = 90};
     const option table[] = {
-        {"--audio", OPTION_PARSED, &o->audio, "null|wav:FILE|raw:-",
-         .help = "where the blocks go:\n"
-                 "null      a clock-paced device: one block per block period, in\n"
-                 "          real time (the default)\n"
-                 "wav:FILE  32-bit float WAV, as fast as possible, deterministic\n"
-                 "raw:-     interleaved float32 to stdout, deterministic",
-         .parse = audio_output_parse},
+        audio_output_option(&o->audio, "where the blocks go:\n"
+                                       "null      a clock-paced device: one block per block\n"
+                                       "          period, in real time (the default)\n"
+                                       "wav:FILE  32-bit float WAV, as fast as possible,\n"
+                                       "          deterministic\n"
+                                       "raw:-     interleaved float32 to stdout, deterministic"),
         {"--block", OPTION_INTEGER, &o->block_frames, NULL,
          .help = "frames per block (default: the scene's)", .one_of = blocks},
         {"--rate", OPTION_INTEGER, &o->rate_hz, NULL,

@@ -7,8 +7,6 @@
 #include "generator.h"
 #include "scene_internal.h"
 
-#define MAX_SEED 9007199254740992.0 /* 2^53 */
-
 static const char *const discharge_keys[] = {
     "time", "preset", "T0", "r0", "ps0", "sigma0", "t0_jitter", "return_stroke_speed",
     "strokes", "continuous", "seed", "offset", "propagation", "model", "tree", "generator",
@@ -160,8 +158,7 @@ int scene_parse_discharge(const cJSON *item, const char *path, size_t index, con
         parse_sound(item, path, &d->post.sound, err, err_size) ||
         json_number(item, path, "strokes", (number_range){0, FG_MAX_STROKES, .integer = true},
                     &strokes, err, err_size) ||
-        json_number(item, path, "seed", (number_range){0, MAX_SEED, .integer = true}, &seed, err,
-                    err_size) ||
+        json_number(item, path, "seed", SCENE_SEED_RANGE, &seed, err, err_size) ||
         json_vec3(item, path, "offset", d->offset_m, err, err_size))
         return -1;
     d->post.strokes = (uint32_t)strokes;

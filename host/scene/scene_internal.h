@@ -6,6 +6,9 @@
 #include "json_read.h"
 #include "scene.h"
 
+/* The seeds a scene may give: integers below 2^53, each exact in JSON. */
+#define SCENE_SEED_RANGE ((number_range){0, 9007199254740992.0, .integer = true})
+
 /* "listener" (item may be NULL: the default pose) into s->poses. */
 int scene_parse_listener(const cJSON *item, scene *s, char *err, size_t err_size);
 

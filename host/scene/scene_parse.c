@@ -6,8 +6,6 @@
 
 #include "scene_internal.h"
 
-#define MAX_SEED 9007199254740992.0 /* 2^53: every integer below is exact in JSON */
-
 static const char *const top_keys[] = {
     "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
     "temperature_c", "humidity", "pressure", "propagation", "listener", "discharges",
@@ -41,8 +39,7 @@ static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_siz
                     err_size) ||
         json_number(json, "", "duration", (number_range){0, SCENE_MAX_DURATION_S, .lo_open = true},
                     &s->duration_s, err, err_size) ||
-        json_number(json, "", "seed", (number_range){0, MAX_SEED, .integer = true}, &seed, err,
-                    err_size) ||
+        json_number(json, "", "seed", SCENE_SEED_RANGE, &seed, err, err_size) ||
         json_number(json, "", "gain", (number_range){0, 1e9, .lo_open = true}, &s->gain, err,
                     err_size) ||
         json_number(json, "", "speed_of_sound", (number_range){.lo = 100, .hi = 1000}, &speed, err,

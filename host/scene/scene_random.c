@@ -14,7 +14,6 @@
 #include "scene_internal.h"
 
 #define RANDOM_MAX_DISCHARGES 100000
-#define MAX_SEED 9007199254740992.0 /* 2^53 */
 
 /* The keys of "random" that are not a discharge's. */
 static const char *const own_keys[] = {"rate_hz", "region", "start", "end", "seed", NULL};
@@ -118,8 +117,7 @@ int scene_parse_random(cJSON *json, scene *s, char *err, size_t err_size)
                     &start, err, err_size) ||
         json_number(item, "random", "end", (number_range){0, SCENE_MAX_DURATION_S, .lo_open = true},
                     &end, err, err_size) ||
-        json_number(item, "random", "seed", (number_range){0, MAX_SEED, .integer = true}, &seed,
-                    err, err_size) ||
+        json_number(item, "random", "seed", SCENE_SEED_RANGE, &seed, err, err_size) ||
         parse_region(cJSON_GetObjectItemCaseSensitive(item, "region"), lo, hi, err, err_size))
         return -1;
     if (rate == 0)

@@ -52,14 +52,6 @@ static void take_replies(view *v, fgg_picture *pic)
     }
 }
 
-static void release_audio(view *v, uint64_t target)
-{
-    pthread_mutex_lock(&v->lock);
-    v->audio_target = target;
-    pthread_cond_broadcast(&v->changed);
-    pthread_mutex_unlock(&v->lock);
-}
-
 /* One frame: events, answers, the picture at now_s. Returns -1 on a GL error. */
 static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
                  const view_event *events, size_t count, size_t *next)
@@ -92,7 +84,7 @@ static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
             return -1;
     }
     if (headless)
-        release_audio(v, (uint64_t)llround((k + 1) / v->opt.fps * v->rate_hz));
+        view_release_audio(v, (uint64_t)llround((k + 1) / v->opt.fps * v->rate_hz));
     return 0;
 }
 
@@ -119,12 +111,8 @@ static int loop(view *v, fgg_context *ctx, fgg_picture *pic, char *err, size_t e
     }
     free(events);
     /* headless: the sound of every frame drawn, then stop */
-    if (v->opt.backend != FGG_BACKEND_WINDOW) {
-        pthread_mutex_lock(&v->lock);
-        while (atomic_load(&v->audio_done) < v->audio_target && !atomic_load(&v->stop))
-            pthread_cond_wait(&v->changed, &v->lock);
-        pthread_mutex_unlock(&v->lock);
-    }
+    if (v->opt.backend != FGG_BACKEND_WINDOW)
+        view_wait_audio(v);
     return rc;
 }
 
@@ -195,10 +183,7 @@ static int view_scene(view *v)
         rc = loop(v, ctx, pic, err, sizeof err);
     else
         snprintf(err, sizeof err, "cannot start the threads");
-    pthread_mutex_lock(&v->lock);
-    atomic_store(&v->stop, true);
-    pthread_cond_broadcast(&v->changed);
-    pthread_mutex_unlock(&v->lock);
+    view_stop(v);
     if (started >= 1)
         pthread_join(sim, NULL);
     if (started == 2)

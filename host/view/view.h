@@ -1,5 +1,5 @@
 /* fulgur view: a window (or a headless EGL context) over gpu/'s picture,
- * with the engine sounding what it shows. Four pieces, one file each:
+ * with the engine sounding what it shows. One piece a file:
  *
  *   view.c        [gpu-thread] the frame loop: input events, the camera,
  *                 the picture; starts and joins the other two threads
@@ -9,6 +9,8 @@
  *   view_sim.c    [sim-thread] grows trees (generators, charges), posts
  *                 them, answers with the tree and its stroke offsets
  *   view_audio.c  [audio-thread] pulls fg_engine_render into an audio driver
+ *   view_gate.c   the headless lock-step between frames and audio; stopping
+ *   view_options.c, view_window.c  the command line; GLFW's callbacks
  *
  * The frame thread and the sim thread talk through two single-producer,
  * single-consumer rings (view_ring): requests one way, grown trees back.
@@ -156,6 +158,21 @@ void view_camera_get(const view_camera *c, fgg_camera *out);
 int view_window_attach(view *v, fgg_context *ctx);
 /* Polls the window's events; false once it should close. [gpu-thread] */
 bool view_window_poll(view *v, fgg_context *ctx);
+
+/* view_gate.c — asks the other threads to finish and wakes the waiting
+ * ones. [any-thread] */
+void view_stop(view *v);
+/* Headless: the audio thread may render up to engine frame target.
+ * [gpu-thread] */
+void view_release_audio(view *v, uint64_t target);
+/* Headless audio thread at engine frame `frames`: waits for a target past
+ * it; the frames of the next block (at most block_frames), 0 on stop. */
+uint32_t view_wait_target(view *v, uint64_t frames, uint32_t block_frames);
+/* The audio thread has rendered `frames` (audio_done; wakes a waiter). */
+void view_announce_audio(view *v, uint64_t frames);
+/* Headless: waits until the audio has rendered up to the target, or stop.
+ * [gpu-thread] */
+void view_wait_audio(view *v);
 
 void *view_sim_thread(void *arg);
 void *view_audio_thread(void *arg);

@@ -3,25 +3,14 @@
  * clock to absolute deadlines one block period apart, as run paces its null
  * device, whatever the driver (a player reading raw:- wants real time).
  * Headless: lock-step, rendering up to the frame thread's audio_target.
- * Paced, the loop takes no lock; headless, the gate's lock is taken between
- * blocks to wait for the target and to announce progress. */
+ * Paced, the loop takes no lock; headless, the gate's lock (view_gate.c)
+ * is taken between blocks to wait for the target and to announce progress. */
 #include "common/clock.h"
 #include "view.h"
 
 static bool headless(const view *v)
 {
     return v->opt.backend != FGG_BACKEND_WINDOW;
-}
-
-/* Headless: waits until frames is below the target; false on stop. */
-static bool wait_target(view *v, uint64_t frames)
-{
-    pthread_mutex_lock(&v->lock);
-    while (v->audio_target <= frames && !atomic_load(&v->stop))
-        pthread_cond_wait(&v->changed, &v->lock);
-    bool go = !atomic_load(&v->stop);
-    pthread_mutex_unlock(&v->lock);
-    return go;
 }
 
 void *view_audio_thread(void *arg)
@@ -32,12 +21,9 @@ void *view_audio_thread(void *arg)
     for (uint64_t block = 0; !atomic_load(&v->stop); block++) {
         uint32_t n = v->block_frames;
         if (headless(v)) {
-            if (!wait_target(v, frames))
+            n = view_wait_target(v, frames, n);
+            if (n == 0)
                 break;
-            pthread_mutex_lock(&v->lock);
-            uint64_t left = v->audio_target - frames;
-            pthread_mutex_unlock(&v->lock);
-            n = left < n ? (uint32_t)left : n;
         } else {
             monotonic_sleep_until_ns(monotonic_deadline_ns(start_ns, block, period_s));
         }
@@ -49,16 +35,11 @@ void *view_audio_thread(void *arg)
         if (audio_driver_write(&v->driver, v->planes, n, v->audio_error, sizeof v->audio_error))
             break;
         frames += n;
-        atomic_store(&v->audio_done, frames);
-        if (headless(v)) { /* the frame thread may wait for the end */
-            pthread_mutex_lock(&v->lock);
-            pthread_cond_broadcast(&v->changed);
-            pthread_mutex_unlock(&v->lock);
-        }
+        if (headless(v)) /* the frame thread may wait for the end */
+            view_announce_audio(v, frames);
+        else
+            atomic_store(&v->audio_done, frames);
     }
-    pthread_mutex_lock(&v->lock);
-    atomic_store(&v->stop, true);
-    pthread_cond_broadcast(&v->changed);
-    pthread_mutex_unlock(&v->lock);
+    view_stop(v);
     return NULL;
 }

@@ -49,10 +49,8 @@ options_result view_parse_options(int argc, char **argv, view_options *o)
                  "headless, lock-step, for --frames N frames, drawn at frame / fps\n"
                  "seconds",
          .parse = parse_backend},
-        {"--audio", OPTION_PARSED, &o->audio, "null|wav:FILE|raw:-",
-         .help = "as fulgur run: null (the default), a 32-bit float WAV, or raw\n"
-                 "float32 on stdout",
-         .parse = audio_output_parse},
+        audio_output_option(&o->audio, "as fulgur run: null (the default), a 32-bit float\n"
+                                       "WAV, or raw float32 on stdout"),
         {"--frames", OPTION_INTEGER, &o->frames, "N",
          .help = "frames to draw (default: until Esc; headless: required)", .range = {1, 1e7}},
         {"--fps", OPTION_NUMBER, &o->fps, "HZ", .help = "frames per second (default 60)",
