@@ -31,7 +31,7 @@
 
 #include "common/audio_driver.h"
 #include "common/options.h"
-#include "run_stats.h"
+#include "run_hist.h"
 #include "scene/scene.h"
 
 /* The sim thread's polling period in paced mode: part of the post path. */

@@ -1,4 +1,4 @@
-/* fulgur view: set-up, the frame loop on the GL thread, the summary. */
+/* fulgur view: set-up, the frame loop on the GL thread, the report. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -116,7 +116,7 @@ static int loop(view *v, fgg_context *ctx, fgg_picture *pic, char *err, size_t e
     return rc;
 }
 
-static void summary(view *v, uint32_t frames)
+static void report(view *v, uint32_t frames)
 {
     fg_engine_stats st;
     fg_engine_get_stats(v->engine, &st);
@@ -205,7 +205,7 @@ static int view_scene(view *v)
         rc = CLI_RUNTIME;
     }
     if (rc == CLI_OK)
-        summary(v, v->frames_drawn);
+        report(v, v->frames_drawn);
 done:
     fg_engine_destroy(v->engine);
     free(v->planes[0]);

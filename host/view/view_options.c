@@ -12,7 +12,7 @@ static const char about[] =
     "the middle button (or alt) to orbit, scroll to zoom, Esc to quit.\n";
 
 static const char notes[] =
-    "Prints a JSON summary (frames, discharges posted, late events) at the end, to stderr\n"
+    "Prints a JSON report (frames, discharges posted, late events) at the end, to stderr\n"
     "with raw:-. Exit: 0 done, 1 runtime error (no display, GL), 2 bad arguments or scene.\n";
 
 static int parse_backend(const char *text, void *backend, char *why, size_t why_size)

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "run_stats.h"
+#include "run_hist.h"
 
 int run_hist_init(run_hist *h, double bin_s, size_t bin_count)
 {

@@ -1,7 +1,7 @@
 /* A fixed-bin histogram of durations for fulgur run: preallocated, so the
  * audio thread can add to it; quantiles to the bin width; exact maximum. */
-#ifndef HOST_RUN_RUN_STATS_H
-#define HOST_RUN_RUN_STATS_H
+#ifndef HOST_RUN_RUN_HIST_H
+#define HOST_RUN_RUN_HIST_H
 
 #include <stddef.h>
 #include <stdint.h>
