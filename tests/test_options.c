@@ -65,13 +65,15 @@ static options_result parse(const char *line, values *v, char *msg, size_t msg_s
         {"-o", OPTION_TEXT, &v->out, "OUT.wav", .help = "the output", .required = true},
         {"--seconds", OPTION_NUMBER, &v->seconds, "S", .help = "how long",
          .range = {0, 3600, .lo_open = true}},
-        {"--any", OPTION_NUMBER, &v->any, "T", .help = "any time", .range = {-INFINITY, INFINITY}},
+        {"--any", OPTION_NUMBER, &v->any, "T", .help = "any time",
+         .range = {.lo = -INFINITY, .hi = INFINITY}},
         {"--block", OPTION_INTEGER, &v->block, NULL, .help = "frames", .one_of = blocks},
-        {"--voices", OPTION_INTEGER, &v->voices, "N", .help = "pool", .range = {1, 4096}},
+        {"--voices", OPTION_INTEGER, &v->voices, "N", .help = "pool",
+         .range = {.lo = 1, .hi = 4096}},
         {"--loud", OPTION_FLAG, &v->loud, NULL, .help = "louder"},
         {"--audio", OPTION_PARSED, &v->audio, "null|wav:FILE|raw:-", .help = "where",
          .parse = audio_output_parse},
-        {NULL},
+        {0},
     };
     const command_line cl = {"prog", "IN [MORE]", 1, 2, "about\n", "notes\n", table};
     static char copy[512];

@@ -105,7 +105,7 @@ int analyze_main(int argc, char **argv)
         {"--spectrogram", OPTION_TEXT, &spec, "S.dat",
          .help = "write \"time_s freq_hz level_db\" rows (dB re 20 uPa, 1/24-octave\n"
                  "bands, channel 0), a blank line after each time slice"},
-        {NULL},
+        {0},
     };
     const command_line cl = {"fulgur analyze", "IN.wav", 1, 1, about, notes, table};
     size_t operands;

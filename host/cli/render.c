@@ -203,8 +203,8 @@ int render_main(int argc, char **argv)
                  "\"camera\" into a PNG (needs gpu/: FULGUR_GPU)"},
         {"--png-time", OPTION_NUMBER, &png_time, "SECONDS",
          .help = "the picture's time (default: the first return stroke)",
-         .range = {-INFINITY, INFINITY}},
-        {NULL},
+         .range = {.lo = -INFINITY, .hi = INFINITY}},
+        {0},
     };
     const command_line cl = {"fulgur render", "SCENE.json", 1, 1, about, notes, table};
     size_t operands;

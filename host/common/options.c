@@ -91,7 +91,7 @@ void options_help(const command_line *cl, FILE *to)
             at = 0;
             line += n + (line[n] == '\n');
         }
-        if (!o->help || !*o->help)
+        if ((!o->help || !*o->help) && at > 0)
             fputc('\n', to);
     }
     if (cl->notes)

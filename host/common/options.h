@@ -48,7 +48,7 @@ typedef struct command_line {
     size_t min_operands, max_operands;
     const char *about;        /* --help, after the usage line: what the command does */
     const char *notes;        /* --help, after the options: exit codes and the like */
-    const option *options;
+    const option *options;    /* at most 32, then one with name NULL */
 } command_line;
 
 typedef enum options_result { OPTIONS_OK, OPTIONS_HELP, OPTIONS_BAD } options_result;

@@ -38,10 +38,11 @@ static int parse_args(int argc, char **argv, options *o)
     const option table[] = {
         {"-o", OPTION_TEXT, &o->out, "OUT.wav", .help = "the WAV to write", .required = true},
         {"-r", OPTION_NUMBER, &o->rate_hz, "RATE_HZ", .help = "the sample rate (default 48000)",
-         .range = {8000, 384000}},
+         .range = {.lo = 8000, .hi = 384000}},
         {"-t", OPTION_NUMBER, &o->tail_s, "TAIL_S",
-         .help = "seconds rendered after the last MIDI event (default 5)", .range = {0, 3600}},
-        {NULL},
+         .help = "seconds rendered after the last MIDI event (default 5)",
+         .range = {.lo = 0, .hi = 3600}},
+        {0},
     };
     const command_line cl = {"fulgur-lv2-render", "IN.mid [SYMBOL=VALUE]...", 1,
                              MAX_CONTROLS + 1, about, notes, table};

@@ -35,10 +35,10 @@ options_result run_parse_options(int argc, char **argv, run_options *o)
          .range = {0, SCENE_MAX_DURATION_S, .lo_open = true}},
         {"--report", OPTION_TEXT, &o->report_path, "FILE", .help = "where the JSON report goes"},
         {"--voices", OPTION_INTEGER, &o->voices, "N",
-         .help = "the engine's voice pool (default 64)", .range = {1, 4096}},
+         .help = "the engine's voice pool (default 64)", .range = {.lo = 1, .hi = 4096}},
         {"--frame-rate", OPTION_NUMBER, &o->frame_hz, "HZ",
          .help = "the frame thread's rate (default 90)", .range = {0, 1000, .lo_open = true}},
-        {NULL},
+        {0},
     };
     const command_line cl = {"fulgur run", "SCENE.json", 1, 1, about, notes, table};
     size_t operands;

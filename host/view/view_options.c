@@ -52,9 +52,10 @@ options_result view_parse_options(int argc, char **argv, view_options *o)
         audio_output_option(&o->audio, "as fulgur run: null (the default), a 32-bit float\n"
                                        "WAV, or raw float32 on stdout"),
         {"--frames", OPTION_INTEGER, &o->frames, "N",
-         .help = "frames to draw (default: until Esc; headless: required)", .range = {1, 1e7}},
+         .help = "frames to draw (default: until Esc; headless: required)",
+         .range = {.lo = 1, .hi = 1e7}},
         {"--fps", OPTION_NUMBER, &o->fps, "HZ", .help = "frames per second (default 60)",
-         .range = {1, 1000}},
+         .range = {.lo = 1, .hi = 1000}},
         {"--size", OPTION_PARSED, o, "WxH", .help = "the picture in pixels (default 960x540)",
          .parse = parse_size},
         {"--png-dir", OPTION_TEXT, &o->png_dir, "DIR",
@@ -63,7 +64,7 @@ options_result view_parse_options(int argc, char **argv, view_options *o)
          .help = "input events by frame: \"frame 3 key space\",\n"
                  "\"frame 5 click 0.4 0.5 left\", \"frame 6 key h\",\n"
                  "\"frame 7 drag 0.1 0\", \"frame 8 scroll 2\""},
-        {NULL},
+        {0},
     };
     const command_line cl = {"fulgur view", "SCENE.json", 1, 1, about, notes, table};
     size_t operands;
