@@ -12,8 +12,8 @@
  *   state save/restore    [main-thread]   never concurrent with run()
  * Everything run() reads that the worker writes comes back through
  * work_response; the engine's own rings carry the voices. */
-#ifndef FULGUR_HOST_LV2_PLUGIN_H
-#define FULGUR_HOST_LV2_PLUGIN_H
+#ifndef HOST_LV2_PLUGIN_H
+#define HOST_LV2_PLUGIN_H
 
 #include <stdint.h>
 
