@@ -376,6 +376,7 @@ static void test_errors(void **state)
         {{.grid = {{8, 8, 8}, {0, 0, 0}, 0.0}, .iso_level = 1.0}, FG_ERR_ARGUMENT},
         {{.grid = {{8, 8, 8}, {0, 0, 0}, 0.125}, .iso_level = 0.0}, FG_ERR_ARGUMENT},
         {{.grid = {{8, 8, 8}, {0, 0, 0}, 0.125}, .iso_level = -1.0}, FG_ERR_ARGUMENT},
+        {{.grid = {{8, 8, 8}, {0, 0, 0}, 0.125}, .iso_level = 1e301}, FG_ERR_ARGUMENT},
         {{.grid = {{8, 8, 8}, {0, 0, 0}, 0.125}, .iso_level = 1.0, .subdivision = 5},
          FG_ERR_ARGUMENT},
         {{.grid = {{8, 8, 8}, {0, NAN, 0}, 0.125}, .iso_level = 1.0}, FG_ERR_NOT_FINITE},
@@ -428,6 +429,22 @@ static void test_errors(void **state)
     g.u[0][0] = NAN;
     fg_flame_flux again = flux_of(f, &g);
     assert_true(again.flux_m3_s == first.flux_m3_s);
+    /* beyond the burn limit, and a velocity whose flux overflows */
+    double save = g.burn[7];
+    g.burn[7] = 2e300;
+    assert_int_equal(fg_flame_front_flux(f, g.burn, &v, &out), FG_ERR_ARGUMENT);
+    g.burn[7] = save;
+    /* finite layers whose difference overflows in the interpolation */
+    double *uz_copy = malloc(sizeof(double) * 8 * 8 * 9);
+    memcpy(uz_copy, g.u[2], sizeof(double) * 8 * 8 * 9);
+    for (int i = 0; i < 64; i++) {
+        g.u[2][i + 64 * 5] = -1.7e308;
+        g.u[2][i + 64 * 6] = 1.7e308;
+    }
+    assert_int_equal(fg_flame_front_flux(f, g.burn, &v, &out), FG_ERR_NOT_FINITE);
+    memcpy(g.u[2], uz_copy, sizeof(double) * 8 * 8 * 9);
+    free(uz_copy);
+    assert_true(out.flux_m3_s == 42.0);
     v.layout = (fg_velocity_layout)7;
     assert_int_equal(fg_flame_front_flux(f, g.burn, &v, &out), FG_ERR_ARGUMENT);
     v.layout = FG_VELOCITY_MAC;

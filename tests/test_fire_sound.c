@@ -191,6 +191,8 @@ static void test_bad_calls(void **state)
     assert_int_equal(n, 0);
     poisoned[1] = INFINITY;
     assert_int_equal(fg_fire_sound_process(s, poisoned, 3, a, cap, &n), FG_ERR_NOT_FINITE);
+    poisoned[1] = -2e12; /* beyond FG_FIRE_MAX_FLUX_M3_S */
+    assert_int_equal(fg_fire_sound_process(s, poisoned, 3, a, cap, &n), FG_ERR_ARGUMENT);
     assert_int_equal(fg_fire_sound_process(s, flux, steps, a, cap - 1, &n), FG_ERR_CAPACITY);
     assert_int_equal(fg_fire_sound_process(s, NULL, 1, a, cap, &n), FG_ERR_NULL);
     assert_int_equal(fg_fire_sound_process(s, flux, 1, NULL, cap, &n), FG_ERR_NULL);

@@ -47,6 +47,9 @@ extern "C" {
 #define FG_FLAME_MIN_CELLS 2
 #define FG_FLAME_MAX_CELLS 512
 #define FG_FLAME_MAX_SUBDIVISION 4
+/* Burn values and iso levels beyond this magnitude are refused: the
+ * spline's sums must not overflow. */
+#define FG_FLAME_MAX_BURN 1e300
 /* The default refusal limit for a front's scratch memory. */
 #define FG_FLAME_DEFAULT_MAX_BYTES ((size_t)1 << 30)
 
@@ -107,7 +110,8 @@ FG_API size_t fg_flame_front_memory_bytes(const fg_flame_front_config *config);
  * fg_flame_front_destroy. [main-thread] or [sim-thread]
  * Errors: FG_ERR_NULL config or out; FG_ERR_NOT_FINITE origin, cell or iso;
  * FG_ERR_ARGUMENT a size outside FG_FLAME_MIN_CELLS .. FG_FLAME_MAX_CELLS,
- * cell_m <= 0, iso_level <= 0, subdivision outside 0 .. 4;
+ * cell_m <= 0, iso_level <= 0 or > FG_FLAME_MAX_BURN, subdivision outside
+ * 0 .. 4;
  * FG_ERR_CAPACITY the scratch would exceed max_bytes; FG_ERR_NO_MEMORY. */
 FG_API FG_NODISCARD fg_result fg_flame_front_create(const fg_flame_front_config *config,
                                                     fg_flame_front **out);
@@ -132,9 +136,10 @@ FG_API void fg_flame_front_get_config(const fg_flame_front *front, fg_flame_fron
  * [sim-thread]: allocates only when a surface has more triangles than any
  * before it.
  * Errors: FG_ERR_NULL front, burn, velocity, a component pointer or out;
- * FG_ERR_ARGUMENT an unknown layout; FG_ERR_NOT_FINITE a burn value, or a
- * velocity sampled on the front (the front and *out are then unchanged:
- * the last good surface stays); FG_ERR_NO_MEMORY. */
+ * FG_ERR_ARGUMENT an unknown layout, a burn value beyond FG_FLAME_MAX_BURN;
+ * FG_ERR_NOT_FINITE a burn value, a velocity sampled on the front, or a
+ * flux or area that overflows (the front and *out are then unchanged: the
+ * last good surface stays); FG_ERR_NO_MEMORY. */
 FG_API FG_NODISCARD fg_result fg_flame_front_flux(fg_flame_front *front, const double *burn,
                                                   const fg_flame_velocity *velocity,
                                                   fg_flame_flux *out);
@@ -271,6 +276,10 @@ typedef struct fg_fire_sound_stats {
 
 typedef struct fg_fire_sound fg_fire_sound;
 
+/* Flux values beyond this magnitude are refused (a fire of 10^4 m^2 at
+ * 10 m/s has 10^5 m^3/s): p = dI/dt must stay far inside float's range. */
+#define FG_FIRE_MAX_FLUX_M3_S 1e12
+
 /* Creates a stream. Audio frame n is the sound at t = n / sample_rate_hz on
  * the flux's clock, where flux sample i is I at t = i / sim_rate_hz; before
  * flux sample 0 the flux is taken as constant (p = 0). *out is the
@@ -311,9 +320,10 @@ FG_API size_t fg_fire_sound_max_frames(const fg_fire_sound *sound, size_t steps)
  * anywhere gives the same frames as one call. [sim-thread]: never
  * allocates; the cost is the extension's (docs/fire-sound.md has figures).
  * Errors: FG_ERR_NULL sound or frames, flux with steps > 0, out with
- * capacity > 0; FG_ERR_NOT_FINITE a flux value; FG_ERR_CAPACITY capacity
- * below fg_fire_sound_max_frames(steps). On error nothing is taken and
- * *frames is 0. */
+ * capacity > 0; FG_ERR_NOT_FINITE a flux value; FG_ERR_ARGUMENT a flux
+ * beyond FG_FIRE_MAX_FLUX_M3_S, or the stream was drained; FG_ERR_CAPACITY
+ * capacity below fg_fire_sound_max_frames(steps). On error nothing is
+ * taken and *frames is 0. */
 FG_API FG_NODISCARD fg_result fg_fire_sound_process(fg_fire_sound *sound, const double *flux_m3_s,
                                                     size_t steps, float *out, size_t capacity,
                                                     size_t *frames);

@@ -237,9 +237,12 @@ fg_result fg_fire_sound_process(fg_fire_sound *s, const double *flux_m3_s, size_
         return FG_ERR_NULL;
     if (s->drained)
         return FG_ERR_ARGUMENT;
-    for (size_t i = 0; i < steps; i++)
+    for (size_t i = 0; i < steps; i++) {
         if (!isfinite(flux_m3_s[i]))
             return FG_ERR_NOT_FINITE;
+        if (fabs(flux_m3_s[i]) > FG_FIRE_MAX_FLUX_M3_S)
+            return FG_ERR_ARGUMENT;
+    }
     if (capacity < fg_fire_sound_max_frames(s, steps))
         return FG_ERR_CAPACITY;
     size_t made = 0;

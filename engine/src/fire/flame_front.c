@@ -63,7 +63,8 @@ fg_result fg_flame_front_create(const fg_flame_front_config *config, fg_flame_fr
             return FG_ERR_NOT_FINITE;
     if (!isfinite(g->cell_m) || !isfinite(config->iso_level))
         return FG_ERR_NOT_FINITE;
-    if (!sizes_ok(config) || !(g->cell_m > 0.0) || !(config->iso_level > 0.0))
+    if (!sizes_ok(config) || !(g->cell_m > 0.0) || !(config->iso_level > 0.0) ||
+        config->iso_level > FG_FLAME_MAX_BURN)
         return FG_ERR_ARGUMENT;
     size_t max_bytes = config->max_bytes ? config->max_bytes : FG_FLAME_DEFAULT_MAX_BYTES;
     if (fg_flame_front_memory_bytes(config) > max_bytes)
@@ -187,6 +188,9 @@ fg_result fg_flame_front_flux(fg_flame_front *f, const double *burn,
     for (size_t i = 0; i < cells; i++)
         if (!isfinite(burn[i]))
             return FG_ERR_NOT_FINITE;
+    for (size_t i = 0; i < cells; i++)
+        if (fabs(burn[i]) > FG_FLAME_MAX_BURN)
+            return FG_ERR_ARGUMENT;
 
     component comp[3];
     for (int a = 0; a < 3; a++) {
@@ -271,6 +275,8 @@ fg_result fg_flame_front_flux(fg_flame_front *f, const double *burn,
                 }
             }
     }
+    if (!isfinite(flux) || !isfinite(area))
+        return FG_ERR_NOT_FINITE;
     /* success: the new surface replaces the last, whose storage is reused */
     double *old = f->tris;
     size_t old_cap = f->tris_cap;
