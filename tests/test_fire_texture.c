@@ -37,6 +37,13 @@ static fg_fire_texture *train(const float *x, size_t frames)
     return t;
 }
 
+/* A procedural clip and a texture trained on it. */
+static fg_fire_texture *clip_texture(uint64_t seed, double seconds, float **x, size_t *frames)
+{
+    *x = clip(seed, seconds, frames);
+    return train(*x, *frames);
+}
+
 /* Output of a fresh stream for x[0 .. n) (and its stats). */
 static float *synthesise(const fg_fire_texture *t, const float *x, size_t n, size_t *made,
                          fg_texture_synth_stats *stats)
@@ -76,8 +83,8 @@ static void test_octave_levels(void **state)
 {
     (void)state;
     size_t n;
-    float *x = clip(2, 6.0, &n);
-    fg_fire_texture *t = train(x, n);
+    float *x;
+    fg_fire_texture *t = clip_texture(2, 6.0, &x, &n);
     size_t made;
     float *y = synthesise(t, x, n, &made, NULL);
     assert_true(made + 2000 > n);
@@ -115,8 +122,8 @@ static void test_scaling_and_silence(void **state)
 {
     (void)state;
     size_t n;
-    float *x = clip(3, 2.0, &n);
-    fg_fire_texture *t = train(x, n);
+    float *x;
+    fg_fire_texture *t = clip_texture(3, 2.0, &x, &n);
     size_t np;
     float *p = low_band(&np), *p10 = malloc(sizeof(float) * np);
     double level = 0.0;
@@ -170,8 +177,8 @@ static void test_latency_and_blocks(void **state)
 {
     (void)state;
     size_t n;
-    float *x = clip(4, 2.0, &n);
-    fg_fire_texture *t = train(x, n);
+    float *x;
+    fg_fire_texture *t = clip_texture(4, 2.0, &x, &n);
     fg_texture_synth a, b;
     assert_true(fg_texture_synth_init(&a, t, 10.0));
     assert_true(fg_texture_synth_init(&b, t, 10.0));

@@ -71,14 +71,22 @@ static int teardown(void **state)
     return rmdir(dir);
 }
 
+/* Writes a tone file and reads it back at 44.1 kHz, which must succeed. */
+static fire_training tone_at_44k(const char *name, int rate, int channels, double seconds,
+                                 int format)
+{
+    write_tone(name, rate, channels, seconds, format, -1);
+    char path[128], err[256] = "";
+    path_of(path, sizeof path, name);
+    fire_training t;
+    assert_int_equal(fire_training_read(path, 44100.0, &t, err, sizeof err), 0);
+    return t;
+}
+
 static void test_resampled_mono(void **state)
 {
     (void)state;
-    write_tone("stereo48k.wav", 48000, 2, 2.0, SF_FORMAT_FLOAT, -1);
-    char path[128], err[256] = "";
-    path_of(path, sizeof path, "stereo48k.wav");
-    fire_training t;
-    assert_int_equal(fire_training_read(path, 44100.0, &t, err, sizeof err), 0);
+    fire_training t = tone_at_44k("stereo48k.wav", 48000, 2, 2.0, SF_FORMAT_FLOAT);
     assert_true(t.resampled && t.file_channels == 2 && t.file_rate_hz == 48000.0);
     assert_true(labs((long)t.frames - 88200) <= 2);
     /* the tone's amplitude at 1000 Hz on the new clock, away from the ends */
@@ -106,11 +114,7 @@ static void test_resampled_mono(void **state)
 static void test_same_rate(void **state)
 {
     (void)state;
-    write_tone("mono44k.wav", 44100, 1, 1.5, SF_FORMAT_PCM_16, -1);
-    char path[128], err[256] = "";
-    path_of(path, sizeof path, "mono44k.wav");
-    fire_training t;
-    assert_int_equal(fire_training_read(path, 44100.0, &t, err, sizeof err), 0);
+    fire_training t = tone_at_44k("mono44k.wav", 44100, 1, 1.5, SF_FORMAT_PCM_16);
     assert_false(t.resampled);
     assert_int_equal(t.frames, 66150);
     for (size_t i = 0; i < t.frames; i++)

@@ -9,9 +9,10 @@
  *           surges), each 1-4 clicks 0.3-3 ms apart; a click is a decaying
  *           sinusoid of 1.5-7 kHz (log-uniform) and 0.06-0.4 ms decay, of
  *           Pareto-distributed amplitude (index 1.6, capped at 30x);
- *   hiss    white noise high-passed at 3 kHz (one pole), sqrt(e(t)) loud.
- * Levels: roar RMS 0.1, click scale 0.08, hiss RMS 0.004; the sum is then
- * scaled to a peak of 0.5. It sounds like a fire more than like anything
+ *   hiss    unit white noise through a one-pole high-pass at 3 kHz,
+ *           sqrt(e(t)) loud.
+ * Levels: roar 0.1 (RMS before the envelope), click scale 0.08, hiss
+ * 0.004; the sum is then scaled to a peak of 0.5. It sounds like a fire more than like anything
  * else, but it is not one: texture synthesis trained on it is only as
  * real as it is. */
 #include <math.h>
