@@ -8,6 +8,7 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -202,6 +203,7 @@ static void test_bad_calls(void **state)
     fg_fire_sound_stats st;
     fg_fire_sound_get_stats(s, &st);
     assert_int_equal(st.flux_steps, 0);
+    assert_true(fg_fire_sound_max_frames(s, SIZE_MAX / 2) == SIZE_MAX);
     assert_int_equal(fg_fire_sound_process(s, flux, steps, a, cap, &n), FG_OK);
     assert_int_equal(fg_fire_sound_process(clean, flux, steps, b, cap, &m), FG_OK);
     assert_int_equal(n, m);
@@ -236,6 +238,7 @@ static void test_bad_configs(void **state)
         {{.bwe = {.half_window_frames = 8}}, FG_ERR_ARGUMENT},
         {{.bwe = {.alpha = NAN}}, FG_ERR_NOT_FINITE},
         {{.level_history_s = -1.0}, FG_ERR_ARGUMENT},
+        {{.level_history_s = 1e300}, FG_ERR_ARGUMENT},
         {{.extension = FG_FIRE_TEXTURE}, FG_ERR_ARGUMENT},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {

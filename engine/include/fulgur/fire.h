@@ -102,8 +102,10 @@ typedef struct fg_flame_flux {
     size_t triangles;
 } fg_flame_flux;
 
-/* The bytes a front of this configuration allocates at most (defaults
- * filled in), or 0 if the grid is outside its limits. [any-thread] */
+/* The scratch bytes a front of this configuration allocates (defaults
+ * filled in; the triangle list, which grows with the surface to 72 bytes
+ * a triangle, twice over, comes on top), or 0 if the grid is outside its
+ * limits. [any-thread] */
 FG_API size_t fg_flame_front_memory_bytes(const fg_flame_front_config *config);
 
 /* Creates a front for one grid. *out is the caller's until
@@ -259,7 +261,7 @@ typedef struct fg_fire_sound_config {
     const fg_fire_texture *texture; /* FG_FIRE_TEXTURE: borrowed, must outlive the
                                        sound and be trained at sample_rate_hz */
     double level_history_s;   /* FG_FIRE_TEXTURE: how far back the input's amplitude
-                                 distribution F_S of eq. 17 reaches: 10 */
+                                 distribution F_S of eq. 17 reaches: 10; at most 3600 */
 } fg_fire_sound_config;
 
 typedef struct fg_fire_sound_stats {
@@ -290,7 +292,7 @@ typedef struct fg_fire_sound fg_fire_sound;
  * extension, a bandwidth-extension parameter out of range (alpha, f_cut
  * and the blend range must satisfy 0 < blend_low < f_cut < blend_high <
  * sample_rate / 2), FG_FIRE_TEXTURE without a texture or with one trained
- * at another rate; FG_ERR_NO_MEMORY. */
+ * at another rate, level_history_s outside (0, 3600]; FG_ERR_NO_MEMORY. */
 FG_API FG_NODISCARD fg_result fg_fire_sound_create(const fg_fire_sound_config *config,
                                                    fg_fire_sound **out);
 
@@ -311,7 +313,7 @@ FG_API void fg_fire_sound_get_config(const fg_fire_sound *sound, fg_fire_sound_c
 FG_API double fg_fire_sound_latency_s(const fg_fire_sound *sound);
 
 /* The most audio frames fg_fire_sound_process can return for `steps` flux
- * samples (a bound, reached in steady state). [any-thread] */
+ * samples (a bound; SIZE_MAX where it would overflow). [any-thread] */
 FG_API size_t fg_fire_sound_max_frames(const fg_fire_sound *sound, size_t steps);
 
 /* Takes flux[0 .. steps) (I at the simulation rate, m^3/s, the steps that

@@ -1,6 +1,7 @@
 /* The flux-series stream: Mitchell-Netravali, high-pass, extension. */
 #include <assert.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -65,7 +66,7 @@ static fg_result check(const fg_fire_sound_config *c)
     if (fs < MIN_RATE_HZ || fs > MAX_RATE_HZ)
         return FG_ERR_SAMPLE_RATE;
     if (c->sim_rate_hz < 10.0 || c->sim_rate_hz > fs / 4.0 || c->highpass_hz >= nyquist ||
-        c->level_history_s <= 0.0)
+        c->level_history_s <= 0.0 || c->level_history_s > 3600.0)
         return FG_ERR_ARGUMENT;
     switch (c->extension) {
     case FG_FIRE_BANDWIDTH_EXTENSION:
@@ -175,13 +176,17 @@ static double latency_frames(const fg_fire_sound *s)
 
 double fg_fire_sound_latency_s(const fg_fire_sound *s)
 {
+    assert(s);
     return latency_frames(s) / s->config.sample_rate_hz;
 }
 
 size_t fg_fire_sound_max_frames(const fg_fire_sound *s, size_t steps)
 {
+    assert(s);
     /* the extension holds back at most its latency, so it never returns
-     * more than it took plus that */
+     * more than it took plus that; saturates rather than wraps */
+    if (steps > (SIZE_MAX - s->extension_latency) / s->p_cap)
+        return SIZE_MAX;
     return steps * s->p_cap + s->extension_latency;
 }
 

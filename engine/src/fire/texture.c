@@ -1,4 +1,5 @@
 /* Training (section 5.1-5.2): G_T, the dictionaries and their trees. */
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -200,6 +201,7 @@ fg_result fg_fire_texture_create_default(double sample_rate_hz, fg_fire_texture 
 
 void fg_fire_texture_get_info(const fg_fire_texture *t, fg_fire_texture_info *out)
 {
+    assert(t && out);
     *out = (fg_fire_texture_info){.config = t->config, .feature_dims = t->shape.dims,
                                   .bytes = t->bytes};
     for (int l = 0; l + 1 < t->shape.levels; l++)

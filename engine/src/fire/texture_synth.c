@@ -136,6 +136,10 @@ static void make_window(fg_texture_synth *s, int l)
     const fg_texture_shape *sh = &s->shape;
     int64_t h = sh->h, c = (int64_t)s->next_window[l] * h;
     int coarsest = l + 2 == sh->levels;
+    /* the rings hold what is read: the coarse part, and this level from
+     * its fine part to the window's end */
+    assert(s->complete[l + 1] - (c / 2 - span_of(sh)) <= (int64_t)s->ring_mask + 1);
+    assert(2 * span_of(sh) + h < (int64_t)s->ring_mask + 1);
     if (!s->dry) {
         fg_level_view fine = view(s, l), coarse = view(s, l + 1);
         double scale = 1.0, gain = 1.0;
@@ -176,6 +180,7 @@ static bool emit_ready(const fg_texture_synth *s, int64_t *i0, double *frac)
     int64_t hop = (int64_t)s->shape.h << (s->shape.levels - 2);
     *i0 = (int64_t)s->emitted / hop;
     *frac = (double)((int64_t)s->emitted % hop) / (double)hop;
+    assert((int64_t)s->next_window[s->shape.levels - 2] - *i0 <= (int64_t)s->gain_mask + 1);
     return (int64_t)s->next_window[s->shape.levels - 2] > *i0 + 1;
 }
 
