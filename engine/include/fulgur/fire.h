@@ -22,6 +22,12 @@
  *                   feature windows and their kd-trees. Read-only once made:
  *                   any number of fire sounds, on any threads, may share it.
  *
+ * The fire voice to come will own one fg_fire_sound: its sim-thread side
+ * calls fg_fire_sound_process with each frame's new flux samples and pushes
+ * the frames returned into an SPSC sample ring, which the render reads
+ * fg_fire_sound_latency_s behind the flux (underruns counted, never
+ * waited for).
+ *
  * Units: metres, seconds, m/s; the flux I in m^3/s; the sound p = dI/dt in
  * m^3/s^2. The paper drops the constant factor of eq. 3 (which a distance
  * 1/(4 pi r) and (gamma - 1)/c0^2 would turn into pascals); so do we: the

@@ -235,7 +235,10 @@ size_t fg_texture_synth_push(fg_texture_synth *s, const float *p, size_t n, floa
 
 size_t fg_texture_synth_latency(const fg_texture_synth *s)
 {
-    fg_texture_synth dry = {.shape = s->shape, .dry = true};
+    /* the same ring sizes, so that the rings' span asserts check the
+     * schedule too */
+    fg_texture_synth dry = {.shape = s->shape, .dry = true, .ring_mask = s->ring_mask,
+                            .gain_mask = s->gain_mask};
     /* after a few periods of the schedule (h 2^(L-1) input samples) the
      * lag repeats; take its largest value over many */
     int64_t period = (int64_t)s->shape.h << (s->shape.levels - 1);
