@@ -50,8 +50,9 @@ static void test_defaults(void **state)
     assert_true(c.bwe.alpha == 3.0 && c.bwe.f_cut_hz == 180.0 && c.bwe.sigma_cut_hz == 10.0);
     assert_true(c.bwe.blend_low_hz == 165.0 && c.bwe.blend_high_hz == 195.0);
     assert_int_equal(c.bwe.half_window_frames, 544); /* 500 at 44.1 kHz */
-    /* 2 steps of Mitchell-Netravali + M/2 + w_H - 1 (M = 4096) */
-    assert_true(fabs(fg_fire_sound_latency_s(s) - (2.0 / 360.0 + (2048.0 + 543.0) / 48000.0)) <
+    assert_int_equal(c.bwe.beta_half_window_frames, 4800); /* fs / sigma_cut */
+    /* 2 steps of Mitchell-Netravali + M/2 + A - 1 (M = 4096) */
+    assert_true(fabs(fg_fire_sound_latency_s(s) - (2.0 / 360.0 + (2048.0 + 4799.0) / 48000.0)) <
                 1e-12);
     fg_fire_sound_destroy(s);
     fg_fire_sound_config d = {.sample_rate_hz = 44100.0, .sim_rate_hz = 240.0};
@@ -60,7 +61,14 @@ static void test_defaults(void **state)
     assert_true(c.bwe.f_cut_hz == 120.0 && c.bwe.blend_low_hz == 110.0 &&
                 c.bwe.blend_high_hz == 130.0);
     assert_int_equal(c.bwe.half_window_frames, 500);
-    assert_true(fabs(fg_fire_sound_latency_s(s) - (2.0 / 240.0 + 2547.0 / 44100.0)) < 1e-12);
+    assert_int_equal(c.bwe.beta_half_window_frames, 6615); /* sigma_cut 20/3 Hz */
+    assert_true(fabs(fg_fire_sound_latency_s(s) - (2.0 / 240.0 + 8662.0 / 44100.0)) < 1e-12);
+    fg_fire_sound_destroy(s);
+    /* table 1's own analysis window: 58 ms less */
+    fg_fire_sound_config literal = {.sample_rate_hz = 44100.0,
+                                    .bwe = {.beta_half_window_frames = 500}};
+    assert_int_equal(fg_fire_sound_create(&literal, &s), FG_OK);
+    assert_true(fabs(fg_fire_sound_latency_s(s) - (2.0 / 360.0 + 2547.0 / 44100.0)) < 1e-12);
     fg_fire_sound_destroy(s);
     fg_fire_sound_destroy(NULL);
 }
@@ -236,6 +244,8 @@ static void test_bad_configs(void **state)
         {{.bwe = {.blend_high_hz = 170.0}}, FG_ERR_ARGUMENT}, /* below f_cut */
         {{.bwe = {.sigma_cut_hz = -1.0}}, FG_ERR_ARGUMENT},
         {{.bwe = {.half_window_frames = 8}}, FG_ERR_ARGUMENT},
+        {{.bwe = {.beta_half_window_frames = 100}}, FG_ERR_ARGUMENT}, /* below w_H */
+        {{.bwe = {.beta_half_window_frames = 600000}}, FG_ERR_ARGUMENT},
         {{.bwe = {.alpha = NAN}}, FG_ERR_NOT_FINITE},
         {{.level_history_s = -1.0}, FG_ERR_ARGUMENT},
         {{.level_history_s = 1e300}, FG_ERR_ARGUMENT},

@@ -254,6 +254,13 @@ typedef struct fg_fire_bwe_config {
     double blend_low_hz;     /* F_low falls linearly from 1 to 0 between these: 165 */
     double blend_high_hz;    /* 195 */
     int half_window_frames;  /* w_H: 500 at 44.1 kHz, scaled with the rate */
+    int beta_half_window_frames; /* A, the half-width of the window on which eq. 13
+                                    is solved for each w_H window, w_H .. 524288:
+                                    sample_rate / sigma_cut (100 ms), which resolves
+                                    the Gaussian g; w_H, table 1's own choice, has
+                                    (A - w_H) frames less latency but puts the band
+                                    power near f_cut off by up to 2 dB (measured;
+                                    docs/fire-sound.md) */
     uint64_t seed;           /* the noise's random phases; any value */
 } fg_fire_bwe_config;
 
@@ -312,10 +319,10 @@ FG_API void fg_fire_sound_get_config(const fg_fire_sound *sound, fg_fire_sound_c
  * the call that brings the flux up to t = n / sample_rate_hz + latency_s
  * (and at most a simulation step and one extension window sooner). It is
  * the Mitchell-Netravali filter's 2 simulation steps plus the extension's
- * own: bandwidth extension M/2 + w_H - 1 frames (M its FFT length, 4096
- * at 44.1 and 48 kHz: 57.8 ms at 44.1 kHz, 63.3 ms in all), texture
- * synthesis 869 frames at the paper's parameters (19.7 ms at 44.1 kHz).
- * [any-thread] */
+ * own: bandwidth extension M/2 + A - 1 frames (M its FFT length, 4096 at
+ * 44.1 and 48 kHz; A the eq. 13 window: 146 ms at 44.1 kHz with the
+ * default A, 58 ms with A = w_H), texture synthesis 869 frames at the
+ * paper's parameters (19.7 ms at 44.1 kHz). [any-thread] */
 FG_API double fg_fire_sound_latency_s(const fg_fire_sound *sound);
 
 /* The most audio frames fg_fire_sound_process can return for `steps` flux

@@ -85,19 +85,15 @@ double fg_bwe_beta(const fg_bwe_weights *w, const double *P, const double *Q, fg
     return fmax(0.0, -b / (2.0 * a));
 }
 
-double fg_bwe_blend_window(fg_bwe *b, double *pw, double *nw, double *y, fg_beta_case *how)
+void fg_bwe_blend(const fg_bwe *b, double *P, const double *Q, double beta, double *y)
 {
     const fg_bwe_weights *w = &b->weights;
-    fg_fft_forward(&b->fft, pw, pw);
-    fg_fft_forward(&b->fft, nw, nw);
-    double beta = fg_bwe_beta(w, pw, nw, how);
     for (size_t k = 0; k < w->bins; k++) {
         double lo = w->f_low[k], hi = beta * w->f_high[k];
-        pw[2 * k] = lo * pw[2 * k] + hi * nw[2 * k];
-        pw[2 * k + 1] = lo * pw[2 * k + 1] + hi * nw[2 * k + 1];
+        P[2 * k] = lo * P[2 * k] + hi * Q[2 * k];
+        P[2 * k + 1] = lo * P[2 * k + 1] + hi * Q[2 * k + 1];
     }
-    fg_fft_inverse(&b->fft, pw, y);
-    return beta;
+    fg_fft_inverse(&b->fft, P, y);
 }
 
 bool fg_bwe_init(fg_bwe *b, const fg_bwe_params *p)
@@ -106,11 +102,21 @@ bool fg_bwe_init(fg_bwe *b, const fg_bwe_params *p)
     b->params = *p;
     b->m = fg_bwe_fft_length(p->half_window);
     size_t ring = 1;
-    while (ring < 2 * (size_t)p->half_window)
+    while (ring < 2 * (size_t)p->beta_half_window)
         ring *= 2;
     b->ring_mask = ring - 1;
     if (!fg_fft_init(&b->fft, b->m) || !fg_bwe_weights_init(&b->weights, p, b->m))
         goto fail;
+    if (p->beta_half_window > p->half_window) {
+        b->ma = FG_FFT_MIN_SIZE;
+        while (b->ma < 2 * (size_t)p->beta_half_window + 1)
+            b->ma *= 2;
+        b->pa = malloc(sizeof(double) * (b->ma + 2));
+        b->na = malloc(sizeof(double) * (b->ma + 2));
+        if (!b->pa || !b->na || !fg_fft_init(&b->fft_beta, b->ma) ||
+            !fg_bwe_weights_init(&b->weights_beta, p, b->ma))
+            goto fail;
+    }
     /* the noise's spectrum: f^(-alpha/2), high-passed by F_high */
     double *magnitude = malloc(sizeof(double) * b->weights.bins);
     if (!magnitude)
@@ -143,6 +149,10 @@ void fg_bwe_deinit(fg_bwe *b)
     fg_noise_deinit(&b->noise);
     fg_bwe_weights_deinit(&b->weights);
     fg_fft_deinit(&b->fft);
+    fg_bwe_weights_deinit(&b->weights_beta);
+    fg_fft_deinit(&b->fft_beta);
+    free(b->pa);
+    free(b->na);
     free(b->p_ring);
     free(b->n_ring);
     free(b->acc);
@@ -166,27 +176,47 @@ size_t fg_bwe_max_frames(const fg_bwe *b, size_t n)
 
 size_t fg_bwe_latency(const fg_bwe *b)
 {
-    return b->m / 2 + (size_t)b->params.half_window - 1;
+    return b->m / 2 + (size_t)b->params.beta_half_window - 1;
 }
 
-/* Window next_window: blend, overlap-add, release what is final. */
+/* The input and its noise around c under the triangle of half-width
+ * `half`, centred in an FFT buffer of m points: p_W and N_W = |p_W| N. */
+static void window_signals(const fg_bwe *b, int64_t c, int64_t half, size_t m, double *pw,
+                           double *nw)
+{
+    int64_t mid = (int64_t)(m / 2);
+    memset(pw, 0, sizeof(double) * m);
+    memset(nw, 0, sizeof(double) * m);
+    for (int64_t d = 1 - half; d < half; d++) {
+        int64_t t = c + d;
+        if (t < 0)
+            continue; /* silence before the start */
+        double w = 1.0 - (double)llabs(d) / (double)half;
+        double x = w * b->p_ring[(uint64_t)t & b->ring_mask];
+        pw[mid + d] = x;
+        nw[mid + d] = fabs(x) * b->n_ring[(uint64_t)t & b->ring_mask];
+    }
+}
+
+/* Window next_window: beta, blend, overlap-add, release what is final. */
 static size_t run_window(fg_bwe *b, float *out)
 {
     int64_t wh = b->params.half_window, half = (int64_t)(b->m / 2);
     int64_t c = (int64_t)b->next_window * wh;
-    memset(b->pw, 0, sizeof(double) * b->m);
-    memset(b->nw, 0, sizeof(double) * b->m);
-    for (int64_t d = 1 - wh; d < wh; d++) {
-        int64_t t = c + d;
-        if (t < 0)
-            continue; /* silence before the start */
-        double w = 1.0 - (double)llabs(d) / (double)wh;
-        double x = w * b->p_ring[(uint64_t)t & b->ring_mask];
-        b->pw[half + d] = x;
-        b->nw[half + d] = fabs(x) * b->n_ring[(uint64_t)t & b->ring_mask];
-    }
+    window_signals(b, c, wh, b->m, b->pw, b->nw);
+    fg_fft_forward(&b->fft, b->pw, b->pw);
+    fg_fft_forward(&b->fft, b->nw, b->nw);
     fg_beta_case how;
-    double beta = fg_bwe_blend_window(b, b->pw, b->nw, b->pw, &how);
+    double beta;
+    if (b->ma) {
+        window_signals(b, c, b->params.beta_half_window, b->ma, b->pa, b->na);
+        fg_fft_forward(&b->fft_beta, b->pa, b->pa);
+        fg_fft_forward(&b->fft_beta, b->na, b->na);
+        beta = fg_bwe_beta(&b->weights_beta, b->pa, b->na, &how);
+    } else {
+        beta = fg_bwe_beta(&b->weights, b->pw, b->nw, &how);
+    }
+    fg_bwe_blend(b, b->pw, b->nw, beta, b->pw);
     b->stats.windows++;
     b->stats.degenerate += how == FG_BETA_DEGENERATE;
     b->stats.no_root += how == FG_BETA_NO_ROOT;
@@ -211,12 +241,13 @@ static size_t run_window(fg_bwe *b, float *out)
 size_t fg_bwe_push(fg_bwe *b, const float *p, size_t n, float *out)
 {
     size_t made = 0;
-    uint64_t wh = (uint64_t)b->params.half_window;
+    uint64_t wh = (uint64_t)b->params.half_window, a = (uint64_t)b->params.beta_half_window;
     for (size_t k = 0; k < n; k++) {
         uint64_t t = b->taken++;
         b->p_ring[t & b->ring_mask] = p[k];
         b->n_ring[t & b->ring_mask] = fg_noise_next(&b->noise);
-        if (b->taken == (b->next_window + 1) * wh)
+        /* window i needs the input up to c_i + A - 1 */
+        if (b->taken == b->next_window * wh + a)
             made += run_window(b, out + made);
     }
     return made;

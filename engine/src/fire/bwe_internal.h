@@ -7,7 +7,8 @@
  *                                            the low band's envelope)
  *   P = FFT(p_W),  Q = FFT(N_W)             (M points, the window centred,
  *                                            zero-padded: M >= 7 w_H)
- *   beta >= 0 from eq. 13 (fg_bwe_beta)
+ *   beta >= 0 from eq. 13 (fg_bwe_beta), on the same signals windowed by
+ *            a triangle of half-width A >= w_H centred at c_i
  *   y = IFFT(F_low P + beta F_high Q)       (eq. 12)
  * and the M samples of y are overlap-added into the output. N is one
  * continuous noise signal (fg_noise) of magnitude f^(-alpha/2) F_high(f):
@@ -22,10 +23,21 @@
  * apart and F_low's impulse response (about 1/30 Hz long) fits in the
  * frame instead of wrapping around.
  *
- * Latency: window i needs the input up to c_i + w_H - 1 and completes the
- * output up to c_{i+1} - M/2 - 1, so output sample n is final once the
- * input reaches n + M/2 + w_H - 1 at most. [sim-thread]; init allocates,
- * push never does. */
+ * The analysis window for beta. Eq. 13 weights the power by g^2, a
+ * Gaussian of sigma_cut = 10 Hz; a window of half-width T seconds smears
+ * the spectrum over +-1/T (+-88 Hz for table 1's w_H = 500 at 44.1 kHz),
+ * so on the w_H window eq. 13 balances band powers smeared over 90-270 Hz
+ * where the input's spectrum falls steeply (the interpolation's roll-off
+ * at the simulation's Nyquist frequency): measured, the output's power
+ * under g^2 then misses the input's by -0.5 .. +2 dB. With A = fs /
+ * sigma_cut (T = 1/sigma_cut, 100 ms) the window resolves g and the
+ * balance holds to +-0.25 dB; A = w_H is the paper's own choice, offered
+ * for its lower latency. The analysis transform has Ma >= 2A + 1 points.
+ *
+ * Latency: window i is made once the input reaches c_i + A - 1 and
+ * completes the output up to c_{i+1} - M/2 - 1, so output sample n is
+ * final once the input reaches n + M/2 + A - 1 at most. [sim-thread];
+ * init allocates, push never does. */
 #ifndef FULGUR_FIRE_BWE_INTERNAL_H
 #define FULGUR_FIRE_BWE_INTERNAL_H
 
@@ -42,6 +54,7 @@ typedef struct fg_bwe_params {
     double f_cut_hz, sigma_cut_hz;
     double blend_low_hz, blend_high_hz;
     int half_window;     /* w_H, samples */
+    int beta_half_window; /* A >= w_H, samples: the analysis window of eq. 13 */
     uint64_t seed;
 } fg_bwe_params;
 
@@ -67,6 +80,10 @@ typedef struct fg_bwe {
     size_t m;            /* FFT length M */
     fg_fft fft;
     fg_bwe_weights weights;
+    size_t ma;           /* the analysis FFT length, 0 when A = w_H (P, Q serve) */
+    fg_fft fft_beta;
+    fg_bwe_weights weights_beta;
+    double *pa, *na;     /* Ma + 2 each */
     fg_noise noise;
     double *p_ring, *n_ring; /* input and noise history, ring_mask + 1 long */
     size_t ring_mask;
@@ -98,10 +115,9 @@ void fg_bwe_weights_deinit(fg_bwe_weights *w);
  * is least. */
 double fg_bwe_beta(const fg_bwe_weights *w, const double *P, const double *Q, fg_beta_case *how);
 
-/* One window: pw and nw (M + 2 doubles each; the first M hold the windowed
- * signal and noise, the window centred at M/2) are overwritten; y[0 .. M)
- * = IFFT(F_low P + beta F_high Q); returns beta. */
-double fg_bwe_blend_window(fg_bwe *b, double *pw, double *nw, double *y, fg_beta_case *how);
+/* Eq. 12: y[0 .. M) = IFFT(F_low P + beta F_high Q) for the spectra P and
+ * Q (M + 2 doubles each, as fg_fft_forward makes them; P is overwritten). */
+void fg_bwe_blend(const fg_bwe *b, double *P, const double *Q, double beta, double *y);
 
 /* Validates nothing (the public layer does); false when out of memory. */
 bool fg_bwe_init(fg_bwe *b, const fg_bwe_params *p);
@@ -110,7 +126,7 @@ void fg_bwe_reset(fg_bwe *b);
 
 /* Output samples released per input sample, at most, in a call of n. */
 size_t fg_bwe_max_frames(const fg_bwe *b, size_t n);
-/* The latency bound, samples: M/2 + w_H - 1. */
+/* The latency bound, samples: M/2 + A - 1. */
 size_t fg_bwe_latency(const fg_bwe *b);
 
 /* Takes p[0 .. n) and writes the output samples they complete to out,

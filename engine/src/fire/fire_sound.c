@@ -51,6 +51,12 @@ static void fill_defaults(fg_fire_sound_config *c)
     b->blend_high_hz = def(b->blend_high_hz, 195.0 * k);
     if (b->half_window_frames == 0)
         b->half_window_frames = (int)lround(500.0 * c->sample_rate_hz / 44100.0);
+    /* an analysis window of 1 / sigma_cut: one that resolves g */
+    if (b->beta_half_window_frames == 0 && b->sigma_cut_hz > 0.0 && isfinite(b->sigma_cut_hz)) {
+        double a = round(c->sample_rate_hz / b->sigma_cut_hz);
+        b->beta_half_window_frames =
+            a < b->half_window_frames ? b->half_window_frames : a > 524288.0 ? 524288 : (int)a;
+    }
 }
 
 static fg_result check(const fg_fire_sound_config *c)
@@ -73,7 +79,9 @@ static fg_result check(const fg_fire_sound_config *c)
         if (b->alpha < 0.5 || b->alpha > 6.0 || b->sigma_cut_hz <= 0.0 ||
             !(0.0 < b->blend_low_hz && b->blend_low_hz < b->f_cut_hz &&
               b->f_cut_hz < b->blend_high_hz && b->blend_high_hz < nyquist) ||
-            b->half_window_frames < 16 || b->half_window_frames > 65536)
+            b->half_window_frames < 16 || b->half_window_frames > 65536 ||
+            b->beta_half_window_frames < b->half_window_frames ||
+            b->beta_half_window_frames > 524288)
             return FG_ERR_ARGUMENT;
         break;
     case FG_FIRE_TEXTURE:
@@ -116,6 +124,7 @@ fg_result fg_fire_sound_create(const fg_fire_sound_config *config, fg_fire_sound
             .blend_low_hz = c.bwe.blend_low_hz,
             .blend_high_hz = c.bwe.blend_high_hz,
             .half_window = c.bwe.half_window_frames,
+            .beta_half_window = c.bwe.beta_half_window_frames,
             .seed = c.bwe.seed,
         };
         ok = fg_bwe_init(&s->bwe, &p);
