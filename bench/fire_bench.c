@@ -5,7 +5,8 @@
  *   front: B-spline + marching cubes + flux per step at 32^3 .. 96^3
  *          (subdivision 1 and 2), against the 2.78 ms of a 360 Hz step;
  *   bwe:   10 s of that flame's flux (48^3) through bandwidth extension at
- *          44.1 and 48 kHz, x real time;
+ *          44.1 and 48 kHz, x real time (eq. 13 on the default window and
+ *          on table 1's);
  *   texture: the same flux through texture synthesis trained on the
  *          procedural clip, 8 s (the default) and 15 s (|D_1| like the
  *          paper's Dragon and Flame Jet, table 2), x real time.
@@ -251,9 +252,12 @@ int main(void)
     front_rows(out, &f, 96, 1, 40, NULL);
 
     fg_fire_sound_config bwe = {.sample_rate_hz = 44100.0};
-    stream_rows(out, "bwe", &bwe, flux, steps, 5, "");
+    stream_rows(out, "bwe", &bwe, flux, steps, 5, "eq. 13 on A = fs / sigma_cut (the default)");
     bwe.sample_rate_hz = 48000.0;
-    stream_rows(out, "bwe", &bwe, flux, steps, 5, "");
+    stream_rows(out, "bwe", &bwe, flux, steps, 5, "eq. 13 on A = fs / sigma_cut (the default)");
+    fg_fire_sound_config literal = {.sample_rate_hz = 44100.0,
+                                    .bwe = {.beta_half_window_frames = 500}};
+    stream_rows(out, "bwe", &literal, flux, steps, 5, "eq. 13 on A = w_H (table 1's window)");
     fg_fire_sound_config low = {.sample_rate_hz = 48000.0, .extension = FG_FIRE_LOW_ONLY};
     stream_rows(out, "low", &low, flux, steps, 5, "Mitchell-Netravali + high-pass only");
 
