@@ -282,8 +282,8 @@ typedef struct fg_fire_sound_stats {
     uint64_t frames;          /* audio frames returned */
     uint64_t windows;         /* bandwidth extension: windows blended */
     uint64_t beta_degenerate; /* windows whose noise had no power near f_cut: beta = 0 */
-    uint64_t beta_no_root;    /* windows where eq. 13 had no real root: beta at the
-                                 residual's minimum */
+    uint64_t beta_no_root;    /* windows where eq. 13 had no real root >= 0: beta at
+                                 the residual's least (impossible with F_low <= 1) */
     double last_beta;
     uint64_t texture_queries; /* texture: nearest-neighbour searches */
     uint64_t texture_silent;  /* texture: windows of silent input (output 0) */
