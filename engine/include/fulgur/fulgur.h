@@ -7,6 +7,7 @@
 #include "fulgur/field_scene.h"
 #include "fulgur/engine.h"
 #include "fulgur/field.h"
+#include "fulgur/fire.h"
 #include "fulgur/growth.h"
 #include "fulgur/lightning.h"
 #include "fulgur/propagation.h"
