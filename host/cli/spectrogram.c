@@ -10,12 +10,12 @@
 #include <stdlib.h>
 
 #include "spectrogram.h"
+#include "fg_math.h"
 
 #define MAX_SLICES 400
 #define BAND_RATIO 1.0293022366434921 /* 2^(1/24): bands at least 1/24 octave wide */
 #define P_REF_PA 20e-6
 #define FLOOR_DB (-20.0)
-#define PI 3.14159265358979323846
 
 /* Window length: the power of two at or above 1/12 s (4096 at 48 kHz,
  * ~12 Hz bins: thunder's 20-50 Hz is resolved). */
@@ -65,7 +65,7 @@ int spectrogram_write(FILE *out, const float *samples, size_t frames, int channe
     if (!plan || !window)
         goto done;
     for (size_t i = 0; i < n; i++)
-        window[i] = 0.5 - 0.5 * cos(2 * PI * (double)i / (double)n);
+        window[i] = 0.5 - 0.5 * cos(2 * FG_PI * (double)i / (double)n);
     fprintf(out, "# time_s freq_hz level_db_re_20uPa (window %zu, hop %zu, channel %d)\n", n,
             hop, channel);
     for (size_t centre = 0; centre <= frames; centre += hop) {

@@ -7,33 +7,21 @@
 #include <string.h>
 
 #include "run_gate.h"
+#include "fg_rng.h"
+#include "fg_vec3.h"
 
-#define RUN_PI 3.14159265358979323846 /* C11 has no M_PI */
 
 typedef struct sway {
     double freq_hz[3];  /* x, z, yaw */
     double phase[3];
 } sway;
 
-static uint64_t splitmix(uint64_t *state)
-{
-    uint64_t z = (*state += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return z ^ (z >> 31);
-}
-
-static double uniform(uint64_t *state)
-{
-    return (double)(splitmix(state) >> 11) * 0x1.0p-53;
-}
-
 static void sway_init(sway *w, uint64_t seed)
 {
     uint64_t state = seed ^ 0x5357415955ull;
     for (int k = 0; k < 3; k++) {
-        w->freq_hz[k] = 0.1 + 0.4 * uniform(&state);  /* slow, as a seated head drifts */
-        w->phase[k] = 2 * RUN_PI * uniform(&state);
+        w->freq_hz[k] = 0.1 + 0.4 * fg_splitmix64_uniform(&state);  /* slow, as a seated head drifts */
+        w->phase[k] = 2 * FG_PI * fg_splitmix64_uniform(&state);
     }
 }
 
@@ -42,9 +30,9 @@ static void sway_apply(const sway *w, double t, fg_listener *pose)
 {
     double a[3], da[3];
     for (int k = 0; k < 3; k++) {
-        double arg = 2 * RUN_PI * w->freq_hz[k] * t + w->phase[k];
+        double arg = 2 * FG_PI * w->freq_hz[k] * t + w->phase[k];
         a[k] = sin(arg);
-        da[k] = 2 * RUN_PI * w->freq_hz[k] * cos(arg);
+        da[k] = 2 * FG_PI * w->freq_hz[k] * cos(arg);
     }
     pose->position[0] += RUN_SWAY_M * a[0];
     pose->position[2] += RUN_SWAY_M * a[1];
@@ -52,13 +40,12 @@ static void sway_apply(const sway *w, double t, fg_listener *pose)
     pose->velocity[2] = RUN_SWAY_M * da[1];
     /* Rodrigues' rotation of forward about the (unit) up axis */
     double yaw = RUN_SWAY_YAW_RAD * a[2], c = cos(yaw), s = sin(yaw);
-    const double *u = pose->up, *f = pose->forward;
-    double cross[3] = {u[1] * f[2] - u[2] * f[1], u[2] * f[0] - u[0] * f[2],
-                       u[0] * f[1] - u[1] * f[0]};
-    double dot = u[0] * f[0] + u[1] * f[1] + u[2] * f[2];
-    double out[3];
+    fg_vec3 u = fg_v3_load(pose->up), f = fg_v3_load(pose->forward);
+    double cross[3], along[3], out[3];
+    fg_v3_store(fg_v3_cross(u, f), cross);
+    fg_v3_store(fg_v3_scale(u, fg_v3_dot(u, f)), along);
     for (int k = 0; k < 3; k++)
-        out[k] = f[k] * c + cross[k] * s + u[k] * dot * (1 - c);
+        out[k] = pose->forward[k] * c + cross[k] * s + along[k] * (1 - c);
     memcpy(pose->forward, out, sizeof out);
 }
 

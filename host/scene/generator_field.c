@@ -10,6 +10,7 @@
 #include "generator.h"
 #ifdef FULGUR_HOST_GPU
 #include "generator_field_gpu.h"
+#include "fg_math.h"
 #endif
 
 typedef struct ctx {
@@ -206,7 +207,7 @@ static int parse_growth(const ctx *c, const cJSON *spec, fg_growth_config *g, in
         return fail(c, "growth.step", "must be > 0 (metres)");
     if (g->gamma < 0.0 || g->eta < 0.0)
         return fail(c, g->gamma < 0.0 ? "growth.gamma" : "growth.eta", "must be >= 0");
-    if (g->cone_rad < 0.0 || g->cone_rad > 3.14159265358979323846)
+    if (g->cone_rad < 0.0 || g->cone_rad > FG_PI)
         return fail(c, "growth.cone", "must be an angle in 0..pi radians");
     if (g->branch_probability < 0.0 || g->branch_probability > 1.0)
         return fail(c, "growth.branch_probability", "must be in 0..1");

@@ -8,11 +8,12 @@
 #include "fulgur/lightning.h"
 #include "generator.h"
 #include "json_read.h"
+#include "fg_math.h"
 
 static const number_range positive = {0, 1e7, true, false, false};
 static const number_range non_negative = {0, 1e7, false, false, false};
 static const number_range fraction = {0, 1, false, false, false};
-static const double deg = 3.14159265358979323846 / 180.0;
+static const double deg = FG_PI / 180.0;
 
 static int count_range(const cJSON *obj, const char *base, const char *key, double lo, double hi,
                        uint32_t *out, char *err, size_t err_size)

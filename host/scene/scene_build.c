@@ -38,11 +38,7 @@ static int generate(const scene *s, size_t index, scene_discharge *d, char *err,
         goto done;
     }
     memcpy(nodes, fg_tree_nodes(tree), n * sizeof *nodes);
-    for (size_t i = 0; i < n; i++) {
-        nodes[i].x += d->offset_m[0];
-        nodes[i].y += d->offset_m[1];
-        nodes[i].z += d->offset_m[2];
-    }
+    fg_tree_translate(nodes, n, d->offset_m);
     if (scene_check_tree(nodes, n, nodes_path, err, err_size)) {
         free(nodes);
         goto done;

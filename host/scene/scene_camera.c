@@ -4,15 +4,11 @@
 #include <string.h>
 
 #include "scene_internal.h"
+#include "fg_vec3.h"
 
 static const char *const camera_keys[] = {"eye", "target", "up", "fov", NULL};
 
 #define DEFAULT_FOV_DEG 45.0
-
-static double dot(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 int scene_parse_camera(const cJSON *item, scene *s, char *err, size_t err_size)
 {
@@ -34,15 +30,13 @@ int scene_parse_camera(const cJSON *item, scene *s, char *err, size_t err_size)
         json_number(item, "camera", "fov", (number_range){0, 179, .lo_open = true, .hi_open = true},
                     &c->fov_y_deg, err, err_size))
         return -1;
-    double view[3];
-    for (int k = 0; k < 3; k++)
-        view[k] = c->target_m[k] - c->eye_m[k];
-    double vl = sqrt(dot(view, view)), ul = sqrt(dot(c->up, c->up));
+    fg_vec3 view = fg_v3_sub(fg_v3_load(c->target_m), fg_v3_load(c->eye_m)), up = fg_v3_load(c->up);
+    double vl = fg_v3_len(view), ul = fg_v3_len(up);
     if (!(vl > 0) || !isfinite(vl))
         return json_fail(err, err_size, "camera.target", "must differ from camera.eye");
     if (!(ul > 0) || !isfinite(ul))
         return json_fail(err, err_size, "camera.up", "must have a finite, non-zero length");
-    if (fabs(dot(view, c->up)) > (1 - 1e-9) * vl * ul)
+    if (fabs(fg_v3_dot(view, up)) > (1 - 1e-9) * vl * ul)
         return json_fail(err, err_size, "camera.up", "is parallel to the view (eye to target)");
     c->given = true;
     return 0;
@@ -70,19 +64,19 @@ void scene_camera_framing(const scene *s, scene_camera *out)
         centre[k] = isfinite(lo[k]) ? 0.5 * (lo[k] + hi[k]) : 0;
         half[k] = isfinite(lo[k]) ? 0.5 * (hi[k] - lo[k]) : 0.5;
     }
-    double radius = fmax(sqrt(dot(half, half)), 1e-3);
+    double radius = fmax(fg_v3_len(fg_v3_load(half)), 1e-3);
     /* From the trees towards the listener, level: the listener's side. */
     const scene_pose *ear = &s->poses[0];
     double side[3] = {ear->position_m[0] - centre[0], ear->position_m[1] - centre[1], 0};
-    if (sqrt(dot(side, side)) < 1e-6 * radius) {
+    if (fg_v3_len(fg_v3_load(side)) < 1e-6 * radius) {
         side[0] = -ear->forward[0];
         side[1] = -ear->forward[1];
     }
-    if (sqrt(dot(side, side)) == 0)
+    if (fg_v3_len(fg_v3_load(side)) == 0)
         side[1] = -1;
-    double sl = sqrt(dot(side, side));
+    double sl = fg_v3_len(fg_v3_load(side));
     /* Far enough that the bounding sphere fits the vertical field of view. */
-    double dist = 1.1 * radius / sin(DEFAULT_FOV_DEG * 3.14159265358979323846 / 360);
+    double dist = 1.1 * radius / sin(DEFAULT_FOV_DEG * FG_PI / 360);
     memset(out, 0, sizeof *out);
     for (int k = 0; k < 3; k++) {
         out->target_m[k] = centre[k];

@@ -6,6 +6,7 @@
 
 #include "generator.h"
 #include "scene_internal.h"
+#include "fg_rng.h"
 
 static const char *const discharge_keys[] = {
     "time", "preset", "T0", "r0", "ps0", "sigma0", "t0_jitter", "return_stroke_speed",
@@ -129,13 +130,8 @@ uint64_t scene_discharge_seed(uint64_t scene_seed, size_t index)
 {
     /* splitmix64's finaliser over the seed, then over the index mixed in:
      * neighbouring indices and seeds give unrelated values. */
-    uint64_t z = scene_seed + 0x9e3779b97f4a7c15u * ((uint64_t)index + 1);
-    for (int round = 0; round < 2; round++) {
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-        z ^= z >> 31;
-    }
-    return z;
+    uint64_t z = scene_seed + FG_SPLITMIX64_GAMMA * ((uint64_t)index + 1);
+    return fg_splitmix64_mix(fg_splitmix64_mix(z));
 }
 
 int scene_parse_discharge(const cJSON *item, const char *path, size_t index, const scene *s,

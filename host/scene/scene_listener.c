@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "scene_internal.h"
+#include "fg_vec3.h"
 
 static const char *const pose_keys[] = {"position", "forward", "up", NULL};
 static const char *const only_path[] = {"path", NULL};
@@ -12,14 +13,13 @@ static const char *const path_pose_keys[] = {"time", "position", "forward", "up"
 
 static double dot(const double a[3], const double b[3])
 {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    return fg_v3_dot(fg_v3_load(a), fg_v3_load(b));
 }
 
 static void normalise(const double v[3], double out[3])
 {
-    double n = sqrt(dot(v, v));
-    for (int k = 0; k < 3; k++)
-        out[k] = v[k] / n;
+    fg_vec3 a = fg_v3_load(v);
+    fg_v3_store(fg_v3_div(a, fg_v3_len(a)), out);
 }
 
 /* Cosine of the angle between two non-zero vectors. */

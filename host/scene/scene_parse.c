@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "scene_internal.h"
+#include "fg_array.h"
 
 static const char *const top_keys[] = {
     "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
@@ -157,8 +158,7 @@ int scene_load(const char *path, scene *out, char *err, size_t err_size)
     size_t size = 0, cap = 0;
     for (;;) {
         if (size == cap) {
-            cap = cap ? 2 * cap : 65536;
-            char *grown = realloc(text, cap);
+            char *grown = fg_array_grow(text, &cap, size + 1, 1, 65536);
             if (!grown)
                 break;
             text = grown;

@@ -12,25 +12,13 @@
 #include <string.h>
 
 #include "scene_internal.h"
+#include "fg_rng.h"
+#include "fg_array.h"
 
 #define RANDOM_MAX_DISCHARGES 100000
 
 /* The keys of "random" that are not a discharge's. */
 static const char *const own_keys[] = {"rate_hz", "region", "start", "end", "seed", NULL};
-
-typedef struct rng {
-    uint64_t state;
-} rng;
-
-/* splitmix64, to [0, 1). */
-static double rng_uniform(rng *r)
-{
-    uint64_t z = (r->state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    z ^= z >> 31;
-    return (double)(z >> 11) * 0x1.0p-53;
-}
 
 static int parse_region(const cJSON *item, double lo[3], double hi[3], char *err,
                         size_t err_size)
@@ -92,11 +80,7 @@ static int instantiate(const scene_discharge *tpl, double t, const double shift[
     if (!nodes)
         return -1;
     memcpy(nodes, tpl->post.nodes, n * sizeof *nodes);
-    for (size_t i = 0; i < n; i++) {
-        nodes[i].x += shift[0];
-        nodes[i].y += shift[1];
-        nodes[i].z += shift[2];
-    }
+    fg_tree_translate(nodes, n, shift);
     out->post.nodes = nodes;
     out->post.node_count = n;
     return 0;
@@ -145,17 +129,18 @@ int scene_parse_random(cJSON *json, scene *s, char *err, size_t err_size)
     }
     /* the process's own seed: the scene's index space cannot collide with it */
     uint64_t own = seed >= 0 ? (uint64_t)seed : scene_discharge_seed(s->seed, SIZE_MAX);
-    rng r = {own};
-    size_t base = s->discharge_count, n = 0;
+    uint64_t r = own;
+    size_t base = s->discharge_count, n = 0, capacity = base;
     int rc = 0;
-    for (double t = start - log1p(-rng_uniform(&r)) / rate; t < end && rc == 0;
-         t -= log1p(-rng_uniform(&r)) / rate) {
+    for (double t = start - log1p(-fg_splitmix64_uniform(&r)) / rate; t < end && rc == 0;
+         t -= log1p(-fg_splitmix64_uniform(&r)) / rate) {
         if (n == RANDOM_MAX_DISCHARGES) {
             rc = json_fail(err, err_size, "random.rate_hz", "more than %d discharges",
                            RANDOM_MAX_DISCHARGES);
             break;
         }
-        scene_discharge *grown = realloc(s->discharges, (base + n + 1) * sizeof *grown);
+        scene_discharge *grown =
+            fg_array_grow(s->discharges, &capacity, base + n + 1, sizeof *grown, 16);
         if (!grown) {
             rc = json_fail(err, err_size, "random", "out of memory");
             break;
@@ -163,7 +148,7 @@ int scene_parse_random(cJSON *json, scene *s, char *err, size_t err_size)
         s->discharges = grown;
         double shift[3];
         for (int k = 0; k < 3; k++)
-            shift[k] = lo[k] + (hi[k] - lo[k]) * rng_uniform(&r);
+            shift[k] = lo[k] + (hi[k] - lo[k]) * fg_splitmix64_uniform(&r);
         if (instantiate(&tpl, t, shift, scene_discharge_seed(own, n),
                         &s->discharges[base + n]) != 0) {
             rc = json_fail(err, err_size, "random", "out of memory");

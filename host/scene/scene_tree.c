@@ -64,10 +64,8 @@ int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[
         json_path_index(node_path, sizeof node_path, list_path, i);
         if (parse_node(c, node_path, &out[i], err, err_size))
             goto fail;
-        out[i].x += offset_m[0];
-        out[i].y += offset_m[1];
-        out[i].z += offset_m[2];
     }
+    fg_tree_translate(out, n, offset_m);
     if (scene_check_tree(out, n, list_path, err, err_size))
         goto fail;
     *nodes = out;

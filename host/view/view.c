@@ -6,19 +6,18 @@
 #include "common/commands.h"
 #include "common/clock.h"
 #include "view.h"
+#include "fg_vec3.h"
 
 /* The camera starts at the scene's framing of its first discharge. */
 static void camera_start(view *v)
 {
     scene_camera sc;
     scene_camera_framing(v->s, &sc);
-    double d[3];
-    for (int k = 0; k < 3; k++)
-        d[k] = sc.eye_m[k] - sc.target_m[k];
+    fg_vec3 d = fg_v3_sub(fg_v3_load(sc.eye_m), fg_v3_load(sc.target_m));
     memcpy(v->cam.target_m, sc.target_m, sizeof v->cam.target_m);
-    v->cam.distance_m = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    v->cam.azimuth_rad = atan2(d[1], d[0]);
-    v->cam.elevation_rad = asin(d[2] / v->cam.distance_m);
+    v->cam.distance_m = fg_v3_len(d);
+    v->cam.azimuth_rad = atan2(d.y, d.x);
+    v->cam.elevation_rad = asin(d.z / v->cam.distance_m);
     v->cam.fov_y_deg = sc.fov_y_deg;
 }
 
@@ -242,7 +241,7 @@ int view_main(int argc, char **argv)
     scene s;
     if (load_scene(opt.scene_path, &s) != 0)
         return CLI_USAGE;
-    view *v = calloc(1, sizeof *v); /* large: the rings and the requests' state */
+    view *v = calloc(1, sizeof *v); /* large: the requests' state */
     if (!v) {
         fputs("fulgur view: out of memory\n", stderr);
         scene_deinit(&s);
@@ -250,11 +249,19 @@ int view_main(int argc, char **argv)
     }
     v->opt = opt;
     v->s = &s;
-    pthread_mutex_init(&v->lock, NULL);
-    pthread_cond_init(&v->changed, NULL);
-    int rc = view_scene(v);
-    pthread_cond_destroy(&v->changed);
-    pthread_mutex_destroy(&v->lock);
+    int rc = CLI_RUNTIME;
+    if (!fg_ring_init(&v->to_sim, VIEW_RING_SIZE, sizeof(void *)) ||
+        !fg_ring_init(&v->from_sim, VIEW_RING_SIZE, sizeof(void *))) {
+        fputs("fulgur view: out of memory\n", stderr);
+    } else {
+        pthread_mutex_init(&v->lock, NULL);
+        pthread_cond_init(&v->changed, NULL);
+        rc = view_scene(v);
+        pthread_cond_destroy(&v->changed);
+        pthread_mutex_destroy(&v->lock);
+    }
+    fg_ring_deinit(&v->to_sim);
+    fg_ring_deinit(&v->from_sim);
     scene_deinit(&s);
     free(v);
     return rc;

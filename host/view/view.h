@@ -34,6 +34,7 @@
 #include "common/options.h"
 #include "fulgur/gpu.h"
 #include "scene/scene.h"
+#include "fg_ring.h"
 
 #define VIEW_MAX_CHARGES 64
 /* A discharge is emitted this long after the frame that asked for it: time
@@ -41,7 +42,7 @@
 #define VIEW_LEAD_S 0.05
 /* The leader is shown growing for this long before the return stroke. */
 #define VIEW_LEADER_S 0.03
-#define VIEW_RING_SIZE 64 /* power of two */
+#define VIEW_RING_SIZE 64 /* requests or trees in flight each way */
 
 typedef enum view_event_kind {
     VIEW_EV_DISCHARGE, /* space */
@@ -60,15 +61,11 @@ typedef struct view_event {
     int sign;          /* click: +1 positive charge, -1 negative */
 } view_event;
 
-/* An SPSC ring of pointers: one producer thread, one consumer thread. */
-typedef struct view_ring {
-    _Alignas(64) _Atomic uint32_t head; /* written by the producer */
-    _Alignas(64) _Atomic uint32_t tail; /* written by the consumer */
-    void *slot[VIEW_RING_SIZE];
-} view_ring;
-
-bool view_ring_push(view_ring *r, void *item);
-void *view_ring_pop(view_ring *r);
+/* The requests and the grown trees travel as pointers through fg_ring
+ * (one producer thread, one consumer thread each): push returns false when
+ * the ring is full, pop NULL when it is empty. */
+bool view_ring_push(fg_ring *r, void *item);
+void *view_ring_pop(fg_ring *r);
 
 typedef enum view_request_kind { VIEW_REQ_ONE, VIEW_REQ_HOLD, VIEW_REQ_STOP } view_request_kind;
 
@@ -123,7 +120,7 @@ typedef struct view {
     double now_s;            /* the picture clock of the frame being made */
     uint32_t frames_drawn;
 
-    view_ring to_sim, from_sim;
+    fg_ring to_sim, from_sim;
     pthread_mutex_t lock;    /* the gates below; never held by the audio path's render */
     pthread_cond_t changed;
     uint64_t audio_target;   /* headless: the audio thread may render up to here */

@@ -6,29 +6,19 @@
 #include <string.h>
 
 #include "view.h"
+#include "fg_vec3.h"
+#include "fg_array.h"
 
-#define PI 3.14159265358979323846
 
-bool view_ring_push(view_ring *r, void *item)
+bool view_ring_push(fg_ring *r, void *item)
 {
-    uint32_t head = atomic_load_explicit(&r->head, memory_order_relaxed);
-    uint32_t tail = atomic_load_explicit(&r->tail, memory_order_acquire);
-    if (head - tail == VIEW_RING_SIZE)
-        return false;
-    r->slot[head & (VIEW_RING_SIZE - 1)] = item;
-    atomic_store_explicit(&r->head, head + 1, memory_order_release);
-    return true;
+    return fg_ring_push(r, &item);
 }
 
-void *view_ring_pop(view_ring *r)
+void *view_ring_pop(fg_ring *r)
 {
-    uint32_t tail = atomic_load_explicit(&r->tail, memory_order_relaxed);
-    uint32_t head = atomic_load_explicit(&r->head, memory_order_acquire);
-    if (head == tail)
-        return NULL;
-    void *item = r->slot[tail & (VIEW_RING_SIZE - 1)];
-    atomic_store_explicit(&r->tail, tail + 1, memory_order_release);
-    return item;
+    void *item;
+    return fg_ring_pop(r, &item) ? item : NULL;
 }
 
 static int parse_line(char *line, view_event *e)
@@ -109,8 +99,7 @@ int view_script_load(const char *path, view_event **events, size_t *count, char 
         if (line[strspn(line, " \t")] == '\0')
             continue;
         if (n == cap) {
-            cap = cap ? 2 * cap : 16;
-            view_event *grown = realloc(list, cap * sizeof *grown);
+            view_event *grown = fg_array_grow(list, &cap, n + 1, sizeof *grown, 16);
             if (!grown) {
                 snprintf(err, err_size, "out of memory");
                 rc = -1;
@@ -155,15 +144,14 @@ static void unproject(const view *v, double x, double y, double out[3])
 {
     fgg_camera cam;
     view_camera_get(&v->cam, &cam);
-    double f[3], r[3], u[3];
-    for (int k = 0; k < 3; k++)
-        f[k] = (cam.target_m[k] - cam.eye_m[k]) / v->cam.distance_m;
-    r[0] = f[1], r[1] = -f[0], r[2] = 0; /* f x up(+z) */
-    double rl = hypot(r[0], r[1]);
-    r[0] /= rl, r[1] /= rl;
-    u[0] = r[1] * f[2] - r[2] * f[1], u[1] = r[2] * f[0] - r[0] * f[2],
-    u[2] = r[0] * f[1] - r[1] * f[0];
-    double half_h = v->cam.distance_m * tan(v->cam.fov_y_deg * PI / 360.0);
+    fg_vec3 fv = fg_v3_div(fg_v3_sub(fg_v3_load(cam.target_m), fg_v3_load(cam.eye_m)),
+                           v->cam.distance_m);
+    fg_vec3 rv = fg_v3(fv.y, -fv.x, 0); /* f x up(+z) */
+    rv = fg_v3_div(rv, hypot(rv.x, rv.y));
+    double r[3], u[3];
+    fg_v3_store(rv, r);
+    fg_v3_store(fg_v3_cross(rv, fv), u);
+    double half_h = v->cam.distance_m * tan(v->cam.fov_y_deg * FG_PI / 360.0);
     double aspect = (double)v->opt.width / v->opt.height;
     for (int k = 0; k < 3; k++)
         out[k] = cam.target_m[k] + (2 * x - 1) * half_h * aspect * r[k] + (1 - 2 * y) * half_h * u[k];
@@ -180,7 +168,7 @@ static void request(view *v, view_request_kind kind)
     q->charge_count = v->charge_count;
     memcpy(q->charges, v->charges, v->charge_count * sizeof *q->charges);
     /* the leader's step: a fiftieth of the view's height at the target */
-    q->step_m = 2 * v->cam.distance_m * tan(v->cam.fov_y_deg * PI / 360.0) / 50;
+    q->step_m = 2 * v->cam.distance_m * tan(v->cam.fov_y_deg * FG_PI / 360.0) / 50;
     if (view_ring_push(&v->to_sim, q))
         v->requests++;
     else
@@ -211,8 +199,8 @@ void view_apply(view *v, const view_event *e)
         }
         break;
     case VIEW_EV_ORBIT:
-        v->cam.azimuth_rad -= e->x * PI;
-        v->cam.elevation_rad += e->y * PI / 2;
+        v->cam.azimuth_rad -= e->x * FG_PI;
+        v->cam.elevation_rad += e->y * FG_PI / 2;
         v->cam.elevation_rad = fmax(-1.4, fmin(1.4, v->cam.elevation_rad));
         break;
     case VIEW_EV_ZOOM:

@@ -25,12 +25,6 @@
 
 #define ROAR_FFT 8192
 
-static double gauss(fg_rng *rng)
-{
-    double u1 = fg_rng_uniform(rng), u2 = fg_rng_uniform(rng);
-    return sqrt(-2.0 * log(1.0 - u1)) * cos(2.0 * FG_PI * u2);
-}
-
 static double log_uniform(fg_rng *rng, double lo, double hi)
 {
     return exp(fg_rng_range(rng, log(lo), log(hi)));
@@ -43,11 +37,11 @@ static void envelope(fg_rng *rng, double fs, double *e, size_t frames)
     double y1 = 0.0, y2 = 0.0, sum2 = 0.0;
     /* start the filters in their steady state: run them for 1 s first */
     for (size_t i = 0; i < (size_t)fs; i++) {
-        y1 = a1 * y1 + (1.0 - a1) * gauss(rng);
+        y1 = a1 * y1 + (1.0 - a1) * fg_rng_gaussian(rng);
         y2 = a2 * y2 + (1.0 - a2) * y1;
     }
     for (size_t i = 0; i < frames; i++) {
-        y1 = a1 * y1 + (1.0 - a1) * gauss(rng);
+        y1 = a1 * y1 + (1.0 - a1) * fg_rng_gaussian(rng);
         y2 = a2 * y2 + (1.0 - a2) * y1;
         e[i] = y2;
         sum2 += y2 * y2;
@@ -105,7 +99,7 @@ fg_result fg_fire_training_clip(double sample_rate_hz, uint64_t seed, float *out
     envelope(&rng, fs, e, frames);
     double hiss_a = exp(-2.0 * FG_PI * 3000.0 / fs), hiss_prev_x = 0.0, hiss_y = 0.0;
     for (size_t i = 0; i < frames; i++) {
-        double x = gauss(&rng);
+        double x = fg_rng_gaussian(&rng);
         /* one-pole high-pass: y = a (y + x - x_prev) */
         hiss_y = hiss_a * (hiss_y + x - hiss_prev_x);
         hiss_prev_x = x;

@@ -36,8 +36,7 @@ typedef struct walker {
 /* The direction after one step of the turn law (see fulgur/lightning.h). */
 static fg_vec3 turn(walker *w, fg_vec3 d, fg_vec3 heading, double mean_rad)
 {
-    double u1 = fg_rng_uniform(&w->rng), u2 = fg_rng_uniform(&w->rng);
-    double gauss = sqrt(-2.0 * log(1.0 - u1)) * cos(2.0 * FG_PI * u2);
+    double gauss = fg_rng_gaussian(&w->rng);
     double theta = fabs(gauss) * mean_rad * sqrt(FG_PI / 2.0); /* half-normal of mean mean_rad */
     double dev = fg_v3_angle(d, heading) / (w->p->max_deviation_deg * deg);
     double k = dev < 1 ? dev : 1;

@@ -4,7 +4,10 @@
 #ifndef FG_RNG_H
 #define FG_RNG_H
 
+#include <math.h>
 #include <stdint.h>
+
+#include "fg_math.h"
 
 /* splitmix64's increment: 2^64 / the golden ratio, odd. */
 #define FG_SPLITMIX64_GAMMA 0x9e3779b97f4a7c15u
@@ -27,6 +30,13 @@ static inline uint64_t fg_splitmix64_next(uint64_t *state)
 static inline double fg_unit_from_bits(uint64_t x)
 {
     return (double)(x >> 11) * 0x1.0p-53;
+}
+
+/* The next splitmix64 output as a double uniform in [0, 1); advances
+ * *state. For a stream that needs nothing more than one word of state. */
+static inline double fg_splitmix64_uniform(uint64_t *state)
+{
+    return fg_unit_from_bits(fg_splitmix64_next(state));
 }
 
 /* xoshiro256**, its state filled from the seed by splitmix64. */
@@ -69,6 +79,14 @@ static inline double fg_rng_uniform(fg_rng *rng)
 static inline double fg_rng_range(fg_rng *rng, double lo, double hi)
 {
     return lo + (hi - lo) * fg_rng_uniform(rng);
+}
+
+/* A standard normal deviate (Box-Muller, one of the pair): two uniforms,
+ * always exactly two, so a stream's later draws do not depend on it. */
+static inline double fg_rng_gaussian(fg_rng *rng)
+{
+    double u1 = fg_rng_uniform(rng), u2 = fg_rng_uniform(rng);
+    return sqrt(-2.0 * log(1.0 - u1)) * cos(2.0 * FG_PI * u2);
 }
 
 #endif

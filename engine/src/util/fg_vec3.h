@@ -38,6 +38,12 @@ static inline fg_vec3 fg_v3_scale(fg_vec3 a, double s)
 {
     return fg_v3(a.x * s, a.y * s, a.z * s);
 }
+/* a / s, component by component (not a times 1/s: the same bits as
+ * dividing each coordinate). */
+static inline fg_vec3 fg_v3_div(fg_vec3 a, double s)
+{
+    return fg_v3(a.x / s, a.y / s, a.z / s);
+}
 static inline double fg_v3_dot(fg_vec3 a, fg_vec3 b)
 {
     return a.x * b.x + a.y * b.y + a.z * b.z;

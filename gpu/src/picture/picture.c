@@ -6,6 +6,7 @@
 
 #include "gpu_shaders.h"
 #include "picture_internal.h"
+#include "fg_array.h"
 
 #define DEFAULT_WIDTH 1280
 #define DEFAULT_HEIGHT 720
@@ -205,7 +206,8 @@ fg_result fgg_picture_add(fgg_picture *p, const fgg_flash *flash, uint32_t *id)
     fgg_flash_rec rec = {0};
     size_t strokes = flash->stroke_offsets_s ? flash->stroke_count : 1;
     rec.strokes_s = calloc(strokes, sizeof *rec.strokes_s);
-    fgg_flash_rec *grown = realloc(p->flashes, (p->flash_count + 1) * sizeof *grown);
+    fgg_flash_rec *grown =
+        fg_array_grow(p->flashes, &p->flash_capacity, p->flash_count + 1, sizeof *grown, 16);
     if (grown)
         p->flashes = grown;
     if (!rec.strokes_s || !grown) {

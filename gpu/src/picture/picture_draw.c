@@ -7,8 +7,8 @@
 #include <string.h>
 
 #include "picture_internal.h"
+#include "fg_vec3.h"
 
-#define FGG_PI 3.14159265358979323846
 
 /* Gains on the float target, where 1 is about where the bloom starts. */
 #define LEADER_GAIN 0.35     /* the growing leader, dim */
@@ -41,8 +41,8 @@ static double decay(double dt)
 static double flicker(double t, uint32_t id)
 {
     double a = 0.37 * id, b = 1.91 * id, c = 4.03 * id;
-    return 1 + 0.25 * sin(2 * FGG_PI * 7.3 * t + a) + 0.15 * sin(2 * FGG_PI * 13.7 * t + b) +
-           0.1 * sin(2 * FGG_PI * 29.9 * t + c);
+    return 1 + 0.25 * sin(2 * FG_PI * 7.3 * t + a) + 0.15 * sin(2 * FG_PI * 13.7 * t + b) +
+           0.1 * sin(2 * FG_PI * 29.9 * t + c);
 }
 
 /* gains = {leader front m (-1: whole tree), leader, all, main}. */
@@ -77,18 +77,6 @@ typedef struct view {
     float focal;     /* 1 / tan(fov / 2) */
 } view;
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 static fg_result make_view(const fgg_camera *c, double aspect, view *v)
 {
     for (int k = 0; k < 3; k++)
@@ -101,30 +89,29 @@ static fg_result make_view(const fgg_camera *c, double aspect, view *v)
     if (fov <= 0 || fov >= 179)
         return fgg_fail(FG_ERR_ARGUMENT, "fgg_picture_draw: fov_y_deg %g is outside (0, 179)",
                         fov);
-    double f[3], up[3] = {c->up[0], c->up[1], c->up[2]}, s[3], u[3];
-    for (int k = 0; k < 3; k++)
-        f[k] = c->target_m[k] - c->eye_m[k];
-    double fl = sqrt(dot3(f, f));
+    fg_vec3 fv = fg_v3_sub(fg_v3_load(c->target_m), fg_v3_load(c->eye_m)), upv = fg_v3_load(c->up);
+    double fl = fg_v3_len(fv);
     if (!(fl > 0))
         return fgg_fail(FG_ERR_ARGUMENT, "fgg_picture_draw: the camera's eye is at its target");
-    if (dot3(up, up) == 0)
-        up[2] = 1;
-    double ul = sqrt(dot3(up, up));
-    cross3(f, up, s);
-    double sl = sqrt(dot3(s, s));
+    if (fg_v3_dot(upv, upv) == 0)
+        upv.z = 1;
+    double ul = fg_v3_len(upv);
+    fg_vec3 sv = fg_v3_cross(fv, upv);
+    double sl = fg_v3_len(sv);
     if (!(sl > 1e-9 * fl * ul))
         return fgg_fail(FG_ERR_ARGUMENT, "fgg_picture_draw: the camera's up is along its view");
-    for (int k = 0; k < 3; k++) {
-        f[k] /= fl;
-        s[k] /= sl;
-    }
-    cross3(s, f, u);
+    fv = fg_v3_div(fv, fl);
+    sv = fg_v3_div(sv, sl);
+    double f[3], s[3], u[3];
+    fg_v3_store(fv, f);
+    fg_v3_store(sv, s);
+    fg_v3_store(fg_v3_cross(sv, fv), u);
     for (int k = 0; k < 3; k++) {
         v->rot[k] = (float)s[k];
         v->rot[3 + k] = (float)u[k];
         v->rot[6 + k] = (float)-f[k];
     }
-    double focal = 1 / tan(fov * FGG_PI / 360);
+    double focal = 1 / tan(fov * FG_PI / 360);
     double near = 1e-3 * fl; /* an infinite far plane: depth is not tested */
     memset(v->proj, 0, sizeof v->proj);
     v->proj[0] = (float)(focal / aspect);

@@ -44,7 +44,7 @@ struct fgg_picture {
     size_t segment_buf_count;  /* segments in segment_buf */
     int segments_dirty;        /* flashes changed since the upload */
     fgg_flash_rec *flashes;
-    size_t flash_count;
+    size_t flash_count, flash_capacity;
     uint32_t next_id;
 };
 
