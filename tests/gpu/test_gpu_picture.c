@@ -4,12 +4,11 @@
  *
  * The golden image: tests/gpu/golden/picture_tree.png. To regenerate it
  * after an intended change of the picture model, run
- *   FULGUR_REGEN_GOLDEN=1 build/tests/gpu/test_gpu_picture tests/gpu/golden
+ *   FULGUR_REGEN_GOLDEN=1 BUILD/tests/gpu/test_gpu_picture tests/gpu/golden
  * from the source root, look at it, and commit it. */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
 #include <dirent.h>
 #include <math.h>
-#include <png.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -24,6 +23,7 @@
 
 #include "fulgur/gpu.h"
 #include "fg_math.h"
+#include "picture_fixture.h"
 
 #define W 256
 #define H 160
@@ -119,53 +119,9 @@ static int lum(const uint8_t *px)
     return px[0] + px[1] + px[2];
 }
 
-/* Reads an 8-bit RGBA PNG; NULL when it is not one. */
-static uint8_t *read_png(const char *path, int *w, int *h)
-{
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&img, path))
-        return NULL;
-    img.format = PNG_FORMAT_RGBA;
-    uint8_t *buf = malloc(PNG_IMAGE_SIZE(img));
-    if (!buf || !png_image_finish_read(&img, NULL, buf, 0, NULL)) {
-        free(buf);
-        png_image_free(&img);
-        return NULL;
-    }
-    *w = (int)img.width;
-    *h = (int)img.height;
-    return buf;
-}
-
-/* --- The camera math of picture_draw.c, in double, for projections. --- */
 static void project(const fgg_camera *c, const double p[3], double *px, double *py)
 {
-    double f[3], s[3], u[3], d[3];
-    for (int k = 0; k < 3; k++) {
-        f[k] = c->target_m[k] - c->eye_m[k];
-        d[k] = p[k] - c->eye_m[k];
-    }
-    double fl = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    for (int k = 0; k < 3; k++)
-        f[k] /= fl;
-    s[0] = f[1] * c->up[2] - f[2] * c->up[1];
-    s[1] = f[2] * c->up[0] - f[0] * c->up[2];
-    s[2] = f[0] * c->up[1] - f[1] * c->up[0];
-    double sl = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-    for (int k = 0; k < 3; k++)
-        s[k] /= sl;
-    u[0] = s[1] * f[2] - s[2] * f[1];
-    u[1] = s[2] * f[0] - s[0] * f[2];
-    u[2] = s[0] * f[1] - s[1] * f[0];
-    double x = s[0] * d[0] + s[1] * d[1] + s[2] * d[2];
-    double y = u[0] * d[0] + u[1] * d[1] + u[2] * d[2];
-    double z = f[0] * d[0] + f[1] * d[1] + f[2] * d[2];
-    double focal = 1 / tan(c->fov_y_deg * FG_PI / 360);
-    double ndc_x = focal * (double)H / W * x / z, ndc_y = focal * y / z;
-    *px = (ndc_x + 1) * 0.5 * W; /* pixel edges: the centre of pixel i is i + 0.5 */
-    *py = (1 - ndc_y) * 0.5 * H;
+    fixture_project(c, W, H, p, px, py, NULL);
 }
 
 static double dist_to_segment(double x, double y, double ax, double ay, double bx, double by)
@@ -204,7 +160,7 @@ static void png_is_valid_and_matches_the_frame(void **state)
     snprintf(path, sizeof path, "%s/frame.png", f->dir);
     assert_int_equal(fgg_picture_write_png(f->pic, path), FG_OK);
     int w = 0, h = 0;
-    uint8_t *png = read_png(path, &w, &h);
+    uint8_t *png = fixture_read_png(path, &w, &h);
     assert_non_null(png);
     assert_int_equal(w, W);
     assert_int_equal(h, H);
@@ -259,30 +215,7 @@ static void matches_the_golden_image(void **state)
     fixture *f = *state;
     add_tree(f, 1.0, 0.05, NULL, 0);
     uint8_t *rgba = draw_read(f, 1.0);
-    char path[512];
-    snprintf(path, sizeof path, "%s/picture_tree.png", golden_dir);
-    if (getenv("FULGUR_REGEN_GOLDEN")) {
-        assert_int_equal(fgg_picture_write_png(f->pic, path), FG_OK);
-        printf("wrote %s\n", path);
-    }
-    int w = 0, h = 0;
-    uint8_t *golden = read_png(path, &w, &h);
-    if (!golden)
-        fail_msg("cannot read the golden image %s", path);
-    assert_int_equal(w, W);
-    assert_int_equal(h, H);
-    double sum = 0;
-    int max = 0;
-    for (int i = 0; i < 4 * W * H; i++) {
-        int d = abs((int)rgba[i] - (int)golden[i]);
-        sum += d;
-        max = d > max ? d : max;
-    }
-    double mean = sum / (4.0 * W * H);
-    printf("golden: mean abs difference %.4f, max %d\n", mean, max);
-    assert_true(mean < 0.5);
-    assert_true(max <= 48);
-    free(golden);
+    fixture_golden(f->pic, rgba, W, H, golden_dir, "picture_tree.png");
     free(rgba);
 }
 
