@@ -1,5 +1,6 @@
 /* The discharge picture on Mesa llvmpipe (EGL surfaceless): a valid PNG,
- * the light where the segments project, a golden image, the timeline, and
+ * the light where the segments project, a golden image, the timeline, a
+ * marker where it projects, moved by a pose and changed by an update, and
  * bad input.
  *
  * The golden image: tests/gpu/golden/picture_tree.png. To regenerate it
@@ -381,6 +382,103 @@ static void bad_input(void **state)
     assert_int_equal(rmdir(path), 0);
 }
 
+/* The colour of the marker's disc near (x, y): a pixel 3 px right of and
+ * below its centre, off the "+" and inside the rim. */
+static const uint8_t *disc_px(const uint8_t *rgba, double x, double y)
+{
+    int i = (int)floor(x) + 3, j = (int)floor(y) + 3;
+    assert_true(i >= 0 && i < W && j >= 0 && j < H);
+    return &rgba[4 * (j * W + i)];
+}
+
+/* A marker is drawn where its point projects, red for +; a pose moves it,
+ * an update turns it blue; bad drawables, poses and updates are refused
+ * and change nothing. */
+static void drawables_poses_and_bad_input(void **state)
+{
+    fixture *f = *state;
+    fgg_picture_remove(f->pic, 0);
+    const double at[3] = {f->nodes[5].x, f->nodes[5].y, f->nodes[5].z};
+    fgg_drawable m = {.kind = FGG_DRAWABLE_MARKER,
+                      .marker = {.position_m = {at[0], at[1], at[2]}, .sign = 1}};
+    uint32_t id = 0;
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &m, &id), FG_OK);
+    assert_true(id != 0);
+    double x, y;
+    project(&f->cam, at, &x, &y);
+    uint8_t *rgba = draw_read(f, 0);
+    const uint8_t *c = disc_px(rgba, x, y);
+    printf("the + marker at (%.1f, %.1f): %d %d %d\n", x, y, c[0], c[1], c[2]);
+    assert_true(c[0] > 150 && c[1] < 80 && c[2] < 80);
+    free(rgba);
+
+    /* moved 2 m along +x by a pose (rotated about z by 90 degrees: a point
+     * at the body origin does not care), then turned negative */
+    fgg_pose pose = {.position_m = {2, 0, 0}, .rotation = {0, -1, 0, 1, 0, 0, 0, 0, 1}};
+    assert_int_equal(fgg_picture_set_pose(f->pic, id, &pose), FG_OK);
+    const double moved[3] = {-at[1] + 2, at[0], at[2]};
+    double mx, my;
+    project(&f->cam, moved, &mx, &my);
+    rgba = draw_read(f, 0);
+    c = disc_px(rgba, mx, my);
+    assert_true(c[0] > 150 && c[1] < 80 && c[2] < 80);
+    assert_int_equal(lum(disc_px(rgba, x, y)), 0); /* not where it was */
+    free(rgba);
+    m.marker.sign = -1;
+    assert_int_equal(fgg_picture_update(f->pic, id, &m), FG_OK);
+    rgba = draw_read(f, 0);
+    c = disc_px(rgba, mx, my);
+    printf("the - marker moved to (%.1f, %.1f): %d %d %d\n", mx, my, c[0], c[1], c[2]);
+    assert_true(c[2] > 150 && c[0] < 80);
+    free(rgba);
+
+    /* bad drawables: nothing is added */
+    assert_int_equal(fgg_picture_add_drawable(NULL, &m, NULL), FG_ERR_NULL);
+    assert_int_equal(fgg_picture_add_drawable(f->pic, NULL, NULL), FG_ERR_NULL);
+    fgg_drawable d = {.kind = (fgg_drawable_kind)99};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_SPHERE, .sphere = {.radius_m = 0}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d.sphere = (fgg_sphere){.centre_m = {0, NAN, 0}, .radius_m = 1};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_NOT_FINITE);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_BOX, .box = {.min_m = {0, 0, 1}, .max_m = {1, 1, 0}}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_PLANE, .plane = {.half_size_m = 1}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_MARKER, .marker = {.sign = 2}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_VOLUME,
+                       .volume = {.radius_m = 1, .height_m = 2, .temperature_k = 500}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d.volume.temperature_k = 1500, d.volume.intensity = -1;
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_GROUND, .ground = {.height_m = 10, .cloud_base_m = 5}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    /* bad updates and poses: nothing changes */
+    fgg_drawable sphere = {.kind = FGG_DRAWABLE_SPHERE, .sphere = {.radius_m = 1}};
+    assert_int_equal(fgg_picture_update(f->pic, id, &sphere), FG_ERR_ARGUMENT);
+    assert_int_equal(fgg_picture_update(f->pic, id + 1000, &m), FG_ERR_NOT_FOUND);
+    fgg_drawable bad_m = m;
+    bad_m.marker.position_m[0] = INFINITY;
+    assert_int_equal(fgg_picture_update(f->pic, id, &bad_m), FG_ERR_NOT_FINITE);
+    fgg_pose skew = {.rotation = {1, 0.1, 0, 0, 1, 0, 0, 0, 1}};
+    assert_int_equal(fgg_picture_set_pose(f->pic, id, &skew), FG_ERR_ARGUMENT);
+    fgg_pose mirror = {.rotation = {-1, 0, 0, 0, 1, 0, 0, 0, 1}};
+    assert_int_equal(fgg_picture_set_pose(f->pic, id, &mirror), FG_ERR_ARGUMENT);
+    fgg_pose far = {.position_m = {NAN, 0, 0}};
+    assert_int_equal(fgg_picture_set_pose(f->pic, id, &far), FG_ERR_NOT_FINITE);
+    assert_int_equal(fgg_picture_set_pose(f->pic, id + 1000, NULL), FG_ERR_NOT_FOUND);
+    rgba = draw_read(f, 0);
+    c = disc_px(rgba, mx, my);
+    assert_true(c[2] > 150 && c[0] < 80); /* still the blue marker where the pose put it */
+    free(rgba);
+    /* a second ground is refused */
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_GROUND};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_OK);
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    fgg_picture_remove(f->pic, 0);
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1)
@@ -392,6 +490,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(timeline),
         cmocka_unit_test(leader_grows_from_the_root),
         cmocka_unit_test(bad_input),
+        cmocka_unit_test(drawables_poses_and_bad_input),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
