@@ -21,6 +21,24 @@ trap 'rm -rf "$tmp"' EXIT
 fail() { echo "$@"; exit 1; }
 run() { scene=$1; shift; "$fulgur" view "$scene" --gl egl --size 160x90 --fps 60 "$@"; }
 brighter() { awk -v b="$1" -v a="$2" 'BEGIN { exit !(a > b + 0.5) }'; }
+# silent_until WAV SECONDS [SAMPLES]: the 48 kHz stereo float WAV is silent
+# before SECONDS and not after (and holds SAMPLES samples when given)
+silent_until() {
+    python3 - "$@" <<'END'
+import struct, sys
+d = open(sys.argv[1], 'rb').read()
+i = 12
+while d[i:i + 4] != b'data':
+    i += 8 + struct.unpack('<I', d[i + 4:i + 8])[0]
+n = struct.unpack('<I', d[i + 4:i + 8])[0] // 4
+x = struct.unpack('<%df' % n, d[i + 8:i + 8 + 4 * n])
+if len(sys.argv) > 3:
+    assert len(x) == int(sys.argv[3]), len(x)
+cut = 2 * int(float(sys.argv[2]) * 48000)
+assert max(abs(v) for v in x[:cut]) == 0
+assert max(abs(v) for v in x[cut:]) > 1e-3
+END
+}
 
 # the scene's own spark at 0.1 s (frame 6): no key, no script
 mkdir "$tmp/timed"
@@ -37,18 +55,7 @@ done
 [ "$($png size "$tmp/timed/frame_0000.png")" = 160x90 ] ||
     fail "--size 160x90 gave $($png size "$tmp/timed/frame_0000.png")"
 # the sound: silent before the spark's emit (0.1 s), then not
-python3 - "$tmp/t.wav" 0.1 <<'END' || fail "the WAV is silent after the scene's spark, or not before"
-import struct, sys
-d = open(sys.argv[1], 'rb').read()
-i = 12
-while d[i:i + 4] != b'data':
-    i += 8 + struct.unpack('<I', d[i + 4:i + 8])[0]
-n = struct.unpack('<I', d[i + 4:i + 8])[0] // 4
-x = struct.unpack('<%df' % n, d[i + 8:i + 8 + 4 * n])
-cut = 2 * int(float(sys.argv[2]) * 48000)
-assert max(abs(v) for v in x[:cut]) == 0
-assert max(abs(v) for v in x[cut:]) > 1e-3
-END
+silent_until "$tmp/t.wav" 0.1 || fail "the WAV is silent after the scene's spark, or not before"
 
 # space at frame 4 (emitted 50 ms later: frame 7 at 60 fps), H from 12 to 20
 # (its glow from 0.25 s: frame 15)
@@ -73,19 +80,8 @@ brighter "$before" "$(m 0008)" || fail "frame 8 ($(m 0008)) is not brighter than
 for k in 0015 0016 0018 0019; do
     brighter "$before" "$(m $k)" || fail "no glow at frame $k while held ($(m $k) against $before)"
 done
-python3 - "$tmp/v.wav" 0.11 <<'END' || fail "the WAV is silent after space, or not before"
-import struct, sys
-d = open(sys.argv[1], 'rb').read()
-i = 12
-while d[i:i + 4] != b'data':
-    i += 8 + struct.unpack('<I', d[i + 4:i + 8])[0]
-n = struct.unpack('<I', d[i + 4:i + 8])[0] // 4
-x = struct.unpack('<%df' % n, d[i + 8:i + 8 + 4 * n])
-assert len(x) == 2 * 19200, len(x)  # 24 frames at 60 fps, 48 kHz, stereo
-cut = 2 * int(float(sys.argv[2]) * 48000)
-assert max(abs(v) for v in x[:cut]) == 0
-assert max(abs(v) for v in x[cut:]) > 1e-3
-END
+# 24 frames at 60 fps, 48 kHz, stereo
+silent_until "$tmp/v.wav" 0.11 38400 || fail "the WAV is silent after space, or not before"
 
 # F1 shows the overlay (when this fulgur has its font) over the top left
 printf 'frame 2 key f1\n' > "$tmp/f1"

@@ -70,6 +70,15 @@ void fixture_project(const fgg_camera *c, int w, int h, const double p[3], doubl
         *depth_m = z;
 }
 
+uint8_t *fixture_draw(fgg_picture *pic, const fgg_camera *c, int w, int h, double t)
+{
+    uint8_t *rgba = malloc(4 * (size_t)w * (size_t)h);
+    assert_non_null(rgba);
+    assert_int_equal(fgg_picture_draw(pic, c, t), FG_OK);
+    assert_int_equal(fgg_picture_read_rgba8(pic, rgba), FG_OK);
+    return rgba;
+}
+
 int fixture_lum(const uint8_t *rgba, int w, int x, int y)
 {
     const uint8_t *p = &rgba[4 * ((size_t)y * (size_t)w + (size_t)x)];

@@ -20,6 +20,10 @@ void fixture_project(const fgg_camera *c, int w, int h, const double p[3], doubl
 /* The focal length in pixels: how many pixels a view-space x / z of 1 is. */
 double fixture_focal_px(const fgg_camera *c, int h);
 
+/* Draws pic at t from c and reads the w x h frame back, malloc'd; fails
+ * the test on an error. */
+uint8_t *fixture_draw(fgg_picture *pic, const fgg_camera *c, int w, int h, double t);
+
 /* R + G + B of the pixel (x, y) of a w-wide frame. */
 int fixture_lum(const uint8_t *rgba, int w, int x, int y);
 

@@ -108,11 +108,7 @@ static void add_tree(fixture *f, double start_s, double leader_s, const double *
 
 static uint8_t *draw_read(fixture *f, double t)
 {
-    uint8_t *rgba = malloc(4 * W * H);
-    assert_non_null(rgba);
-    assert_int_equal(fgg_picture_draw(f->pic, &f->cam, t), FG_OK);
-    assert_int_equal(fgg_picture_read_rgba8(f->pic, rgba), FG_OK);
-    return rgba;
+    return fixture_draw(f->pic, &f->cam, W, H, t);
 }
 
 static int lum(const uint8_t *px)

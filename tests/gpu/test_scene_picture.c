@@ -64,11 +64,16 @@ static void shot_open(fixture *f, const char *name, double t, shot *out)
 
 static uint8_t *shot_draw(shot *sh, double t)
 {
-    uint8_t *rgba = malloc(4 * W * H);
-    assert_non_null(rgba);
-    assert_int_equal(fgg_picture_draw(sh->pic, &sh->cam, t), FG_OK);
-    assert_int_equal(fgg_picture_read_rgba8(sh->pic, rgba), FG_OK);
-    return rgba;
+    return fixture_draw(sh->pic, &sh->cam, W, H, t);
+}
+
+/* The apparatus of the shot's first discharge, of the kind expected. */
+static void shot_apparatus(const shot *sh, scene_apparatus_kind kind, scene_apparatus *out)
+{
+    char err[256];
+    if (scene_discharge_apparatus(&sh->s, 0, out, err, sizeof err) != 0)
+        fail_msg("%s", err);
+    assert_int_equal(out->kind, kind);
 }
 
 static void shot_close(shot *sh)
@@ -137,9 +142,7 @@ static void plasma_ball_globe_has_a_rim(void **state)
     shot sh;
     shot_open(*state, "plasma_ball", 0.5, &sh);
     scene_apparatus a;
-    char err[256];
-    assert_int_equal(scene_discharge_apparatus(&sh.s, 0, &a, err, sizeof err), 0);
-    assert_int_equal(a.kind, SCENE_APPARATUS_PLASMA_BALL);
+    shot_apparatus(&sh, SCENE_APPARATUS_PLASMA_BALL, &a);
     const fg_shape *globe = a.shapes[0].outside ? &a.shapes[0] : &a.shapes[1];
     double cx, cy, r;
     outline(&sh, globe, &cx, &cy, &r);
@@ -162,9 +165,7 @@ static void spark_balls_show_both_balls(void **state)
     shot sh;
     shot_open(*state, "spark_balls", 0.1, &sh);
     scene_apparatus a;
-    char err[256];
-    assert_int_equal(scene_discharge_apparatus(&sh.s, 0, &a, err, sizeof err), 0);
-    assert_int_equal(a.kind, SCENE_APPARATUS_SPARK_GAP);
+    shot_apparatus(&sh, SCENE_APPARATUS_SPARK_GAP, &a);
     assert_int_equal(a.shape_count, 2);
     uint8_t *rgba = shot_draw(&sh, 0.1);
     for (int b = 0; b < 2; b++) {
