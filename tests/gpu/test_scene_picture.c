@@ -10,6 +10,7 @@
  *   FULGUR_REGEN_GOLDEN=1 BUILD/tests/gpu/test_scene_picture examples tests/gpu/golden
  * look at each, and commit them. */
 #include <math.h>
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -103,17 +104,33 @@ static int teardown(void **state)
     return 0;
 }
 
-/* Every example at its first return stroke against its golden image. */
+/* Every example at its first return stroke against its golden image.
+ * The golden images are made by the GCC build, as tests/sound_hashes.txt
+ * is: a lightning tree's growth is chaotic, and another compiler's float
+ * rounding grows another bolt (clang-14 grows lightning_3km with 6489
+ * segments, GCC with 10504), so another compiler's build compares only the
+ * examples without lightning. */
 static void examples_match_their_golden_images(void **state)
 {
     static const char *const names[] = {"designed_thunder", "explicit_tree", "lightning_3km",
                                         "plasma_ball", "spark_balls"};
+#if defined(__GNUC__) && !defined(__clang__)
+    const bool same_growth = true;
+#else
+    const bool same_growth = false;
+#endif
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         shot sh;
         shot_open(*state, names[i], NAN, &sh);
-        uint8_t *rgba = shot_draw(&sh, sh.t);
         char golden[96];
         snprintf(golden, sizeof golden, "scene_%s.png", names[i]);
+        if (!same_growth && picture_outdoors(&sh.s)) {
+            printf("%s: not compared: this compiler grows other lightning trees than GCC\n",
+                   golden);
+            shot_close(&sh);
+            continue;
+        }
+        uint8_t *rgba = shot_draw(&sh, sh.t);
         fixture_golden(sh.pic, rgba, W, H, golden_dir, golden);
         free(rgba);
         shot_close(&sh);
