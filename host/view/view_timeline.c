@@ -1,8 +1,9 @@
 /* The viewer's camera (an orbit about a target) and the scene's own
- * discharges, played from the start as the scene times them (each asked of the sim thread VIEW_TIMELINE_AHEAD_S before its emit
- * time, so its leader shows whole), again from now on R; and the camera
- * that follows them: it eases to each one's framing as it comes, until you
- * orbit, zoom or place a charge; F frames the latest again and follows. */
+ * discharges, played from the start as the scene times them (each asked
+ * of the sim thread VIEW_TIMELINE_AHEAD_S before its emit time, so its
+ * leader shows whole), again from now on R; and the camera that follows
+ * them: it eases to each one's framing as it comes, until you orbit, zoom
+ * or place a charge; F frames the latest again and follows. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -475,6 +475,66 @@ static void drawables_poses_and_bad_input(void **state)
     fgg_picture_remove(f->pic, 0);
 }
 
+/* The mean R, G, B over the 5 x 5 pixels around where p projects. */
+static void mean_rgb_at(const fixture *f, const uint8_t *rgba, const double p[3], double rgb[3])
+{
+    double x, y;
+    project(&f->cam, p, &x, &y);
+    int i0 = (int)floor(x) - 2, j0 = (int)floor(y) - 2;
+    assert_true(i0 >= 0 && i0 + 5 <= W && j0 >= 0 && j0 + 5 <= H);
+    rgb[0] = rgb[1] = rgb[2] = 0;
+    for (int j = j0; j < j0 + 5; j++)
+        for (int i = i0; i < i0 + 5; i++)
+            for (int c = 0; c < 3; c++)
+                rgb[c] += rgba[4 * (j * W + i) + c] / 25.0;
+}
+
+/* A flame (a volume) with a matte wall behind it, no discharge, no
+ * ambient: the flame glows warm (red over blue) where it stands and not
+ * far above it, and it lights the wall beside it; at intensity 0 (an
+ * update) both are dark. */
+static void a_flame_glows_and_lights_the_wall(void **state)
+{
+    fixture *f = *state;
+    fgg_picture_remove(f->pic, 0);
+    fgg_drawable flame = {.kind = FGG_DRAWABLE_VOLUME,
+                          .volume = {.base_m = {0.5, 0, 1}, .radius_m = 0.8, .height_m = 4,
+                                     .intensity = 1, .seed = 7}};
+    fgg_drawable wall = {.kind = FGG_DRAWABLE_BOX,
+                         .box = {.min_m = {-6, 1, -1}, .max_m = {7, 1.2, 11},
+                                 .surface = {.material = FGG_MATERIAL_MATTE}}};
+    uint32_t id;
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &wall, NULL), FG_OK);
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &flame, &id), FG_OK);
+    assert_int_equal(fgg_picture_lit_count(f->pic, 0), 1);
+    const double in_flame[3] = {0.5, 0, 2.2}, above[3] = {0.5, 0, 9.5},
+                 beside[3] = {3.5, 1, 2.5};
+    double rgb_in[3], rgb_above[3], rgb_beside[3];
+    uint8_t *rgba = draw_read(f, 0);
+    mean_rgb_at(f, rgba, in_flame, rgb_in);
+    mean_rgb_at(f, rgba, above, rgb_above);
+    mean_rgb_at(f, rgba, beside, rgb_beside);
+    free(rgba);
+    printf("flame %.0f %.0f %.0f, above it %.0f %.0f %.0f, the wall beside it %.0f %.0f %.0f\n",
+           rgb_in[0], rgb_in[1], rgb_in[2], rgb_above[0], rgb_above[1], rgb_above[2],
+           rgb_beside[0], rgb_beside[1], rgb_beside[2]);
+    assert_true(rgb_in[0] > 120 && rgb_in[0] > rgb_in[2] + 30);
+    double lum_in = rgb_in[0] + rgb_in[1] + rgb_in[2];
+    assert_true(rgb_above[0] + rgb_above[1] + rgb_above[2] < 0.25 * lum_in);
+    assert_true(rgb_beside[0] > 8 && rgb_beside[0] >= rgb_beside[2]);
+
+    flame.volume.intensity = 0;
+    assert_int_equal(fgg_picture_update(f->pic, id, &flame), FG_OK);
+    assert_int_equal(fgg_picture_lit_count(f->pic, 0), 0);
+    rgba = draw_read(f, 0);
+    mean_rgb_at(f, rgba, in_flame, rgb_in);
+    mean_rgb_at(f, rgba, beside, rgb_beside);
+    free(rgba);
+    assert_true(rgb_in[0] + rgb_in[1] + rgb_in[2] < 3);
+    assert_true(rgb_beside[0] + rgb_beside[1] + rgb_beside[2] < 3);
+    fgg_picture_remove(f->pic, 0);
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1)
@@ -487,6 +547,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(leader_grows_from_the_root),
         cmocka_unit_test(bad_input),
         cmocka_unit_test(drawables_poses_and_bad_input),
+        cmocka_unit_test(a_flame_glows_and_lights_the_wall),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
