@@ -4,7 +4,7 @@
 #  - TIMED_SCENE (examples/spark_balls.json, a spark at 0.1 s) with no key:
 #    the scene's own discharge is played, the frames after it are brighter
 #    than before, the WAV is silent before its sound and not after, the
-#    PNGs have the --size asked for;
+#    PNGs have the --size asked for, OSMesa draws the same frames as EGL;
 #  - KEYS_SCENE (whose own discharge comes after the frames), driven by a
 #    script: the frames with the expected names, brighter after space, a
 #    hold glowing while held; the overlay (F1) over the top left corner;
@@ -56,6 +56,19 @@ done
     fail "--size 160x90 gave $($png size "$tmp/timed/frame_0000.png")"
 # the sound: silent before the spark's emit (0.1 s), then not
 silent_until "$tmp/t.wav" 0.1 || fail "the WAV is silent after the scene's spark, or not before"
+# the same shaders on OSMesa: the same frames, byte for byte (when built)
+mkdir "$tmp/osmesa"
+if "$fulgur" view "$timed" --gl osmesa --size 160x90 --fps 60 --frames 9 --png-dir "$tmp/osmesa" \
+    > /dev/null 2> "$tmp/osmesa.err"; then
+    for k in 0003 0008; do
+        cmp -s "$tmp/osmesa/frame_$k.png" "$tmp/timed/frame_$k.png" ||
+            fail "frame $k on OSMesa differs from EGL's"
+    done
+elif grep -q "backend was not built" "$tmp/osmesa.err"; then
+    echo "(no OSMesa in this build: $(cat "$tmp/osmesa.err"))"
+else
+    fail "the OSMesa run failed: $(cat "$tmp/osmesa.err")"
+fi
 
 # space at frame 4 (emitted 50 ms later: frame 7 at 60 fps), H from 12 to 20
 # (its glow from 0.25 s: frame 15)
