@@ -55,7 +55,7 @@ static void solve_row(FILE *out, const size_plan *p, fg_solver solver, int warm)
     check(fg_field_create(&s.grid, &f), "create");
     double cell[3];
     fg_field_cell(f, cell);
-    int repeats = solver == FG_SOLVER_MGPCG ? p->repeats : p->sor_repeats;
+    int repeats = solver == FG_SOLVER_MULTIGRID ? p->repeats : p->sor_repeats;
     int budget = solver == FG_SOLVER_SOR ? p->sor_sweeps : 0;
     fg_solve_config c = {.solver = solver, .max_iterations = budget, .cold = !warm};
     double t[MAX_REPEATS];
@@ -75,11 +75,11 @@ static void solve_row(FILE *out, const size_plan *p, fg_solver solver, int warm)
     }
     double med = bench_median(t, (size_t)repeats) * 1e3;
     fprintf(out, "solve,%d,%s,%s,%d,%.3f,%d,%.2e,%s\n", p->size,
-            solver == FG_SOLVER_MGPCG ? "mgpcg" : "sor", warm ? "warm" : "cold", repeats, med,
+            solver == FG_SOLVER_MULTIGRID ? "mgpcg" : "sor", warm ? "warm" : "cold", repeats, med,
             rep.iterations, rep.residual,
             last == FG_OK ? "converged" : "capped by the sweep budget");
     printf("%3d^3 %-5s %-4s %9.2f ms  %5d it  residual %.1e%s\n", p->size,
-           solver == FG_SOLVER_MGPCG ? "mgpcg" : "sor", warm ? "warm" : "cold", med,
+           solver == FG_SOLVER_MULTIGRID ? "mgpcg" : "sor", warm ? "warm" : "cold", med,
            rep.iterations, rep.residual, last == FG_OK ? "" : "  (capped)");
     fflush(stdout);
     fg_field_destroy(f);
@@ -174,7 +174,7 @@ int main(void)
     fprintf(out, "kind,size,what,start,repeats,median_ms,iterations,residual,note\n");
     for (size_t i = 0; i < sizeof plans / sizeof plans[0]; i++)
         for (int warm = 0; warm < 2; warm++) {
-            solve_row(out, &plans[i], FG_SOLVER_MGPCG, warm);
+            solve_row(out, &plans[i], FG_SOLVER_MULTIGRID, warm);
             solve_row(out, &plans[i], FG_SOLVER_SOR, warm);
         }
     for (int size = 33; size <= 65; size += 32) {
