@@ -89,6 +89,24 @@ static inline float relaxed(const fg_level *L, const fine_row *f, const float *x
     return L->inv_diag[id] * (b + neighbours(f, x, i));
 }
 
+/* The blocks of lanes over [lo, hi) that the vector loops take: from lo
+ * a block at a time, the last one moved back to end at hi, so that it
+ * overlaps the one before. A half-sweep may do that, since it reads only
+ * the other colour, and so may the residual, which writes elsewhere. The
+ * block after the one at t: */
+static inline int next_block(const half *s, int t)
+{
+    int next = t + FG_VF_LANES;
+    return next < s->hi && next + FG_VF_LANES > s->hi ? s->hi - FG_VF_LANES : next;
+}
+
+/* Where the scalar nodes after the blocks start: hi, or lo when [lo, hi)
+ * is shorter than a block (no block then). */
+static inline int after_blocks(const half *s)
+{
+    return s->hi - s->lo >= FG_VF_LANES ? s->hi : s->lo;
+}
+
 void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color)
 {
     for (int k = 0; k < L->n[2]; k++)
@@ -101,8 +119,7 @@ void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color)
             const float *inv = L->inv_diag + f.at + s.first;
             const fg_vf cx = fg_vf_set(f.cx), cy = fg_vf_set(f.cy), cz = fg_vf_set(f.cz),
                         up = fg_vf_set(1.0f / f.scale);
-            int t = s.lo;
-            for (; t + FG_VF_LANES <= s.hi; t += FG_VF_LANES) {
+            for (int t = s.lo; t + FG_VF_LANES <= s.hi; t = next_block(&s, t)) {
                 fg_vf v = cx * (fg_vf_load(o + t) + fg_vf_load(o + t + 1)) +
                           cy * (fg_vf_load(x + f.south + t) + fg_vf_load(x + f.north + t)) +
                           cz * (fg_vf_load(x + f.down + t) + fg_vf_load(x + f.up + t));
@@ -110,9 +127,10 @@ void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color)
                     v += fg_vf_load(rhs + f.at + s.first + t) * up;
                 fg_vf_store(x + t, fg_vf_load(inv + t) * v);
             }
-            for (int u = 0; u < s.count; u++)
-                if (u < s.lo || u >= t)
-                    x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
+            for (int u = 0; u < s.lo; u++)
+                x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
+            for (int u = after_blocks(&s); u < s.count; u++)
+                x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
         }
 }
 
@@ -139,6 +157,18 @@ void fg_fine_sweep_from_zero(const fg_level *L, float *e, const float *rhs)
         }
 }
 
+/* One node of fg_fine_residual: node u of the half at first, h's parity. */
+static inline float residual_at(const fine_row *f, const float *x, const float *rhs, int first,
+                                const float *inv, int u, int h)
+{
+    int i = 2 * u + h;
+    size_t id = f->at + (size_t)first + (size_t)u;
+    float v = (neighbours(f, x, i) - f->dg * x[id]) * scale_at(f, i);
+    if (rhs)
+        v += rhs[id];
+    return inv[u] != 0.0f ? v : 0.0f;
+}
+
 void fg_fine_residual(const fg_level *L, const float *x, const float *rhs, float *out)
 {
     for (int k = 0; k < L->n[2]; k++)
@@ -151,8 +181,7 @@ void fg_fine_residual(const fg_level *L, const float *x, const float *rhs, float
                 const float *xr = x + f.at + s.first, *o = x + f.at + s.other + s.west;
                 const float *inv = L->inv_diag + f.at + s.first;
                 float *res = out + f.at + s.first;
-                int t = s.lo;
-                for (; t + FG_VF_LANES <= s.hi; t += FG_VF_LANES) {
+                for (int t = s.lo; t + FG_VF_LANES <= s.hi; t = next_block(&s, t)) {
                     fg_vf v = cx * (fg_vf_load(o + t) + fg_vf_load(o + t + 1)) +
                               cy * (fg_vf_load(xr + f.south + t) + fg_vf_load(xr + f.north + t)) +
                               cz * (fg_vf_load(xr + f.down + t) + fg_vf_load(xr + f.up + t));
@@ -161,15 +190,10 @@ void fg_fine_residual(const fg_level *L, const float *x, const float *rhs, float
                         v += fg_vf_load(rhs + f.at + s.first + t);
                     fg_vf_store(res + t, fg_vf_select(fg_vf_load(inv + t) != zero, v, zero));
                 }
-                for (int u = 0; u < s.count; u++) {
-                    if (u >= s.lo && u < t)
-                        continue;
-                    int i = 2 * u + h;
-                    float v = (neighbours(&f, x, i) - f.dg * xr[u]) * scale_at(&f, i);
-                    if (rhs)
-                        v += rhs[f.at + s.first + (size_t)u];
-                    res[u] = inv[u] != 0.0f ? v : 0.0f;
-                }
+                for (int u = 0; u < s.lo; u++)
+                    res[u] = residual_at(&f, x, rhs, s.first, inv, u, h);
+                for (int u = after_blocks(&s); u < s.count; u++)
+                    res[u] = residual_at(&f, x, rhs, s.first, inv, u, h);
             }
         }
 }
