@@ -51,15 +51,23 @@ double fg_field_residual(fg_field *f)
     return sqrt(fg_lap_residual(&f->level[0], f->phi, 0, f->r)) / fg_field_b_norm(f);
 }
 
-/* phi += e (split rows) on the free nodes. */
+/* phi += e (split rows) on the free nodes, a row's even nodes and then its
+ * odd ones. */
 static void add_correction(fg_field *f, const float *e)
 {
     const fg_level *L = &f->level[0];
-    const int n = L->n[0];
-    for (size_t row = 0; row < L->count; row += (size_t)n)
-        for (int i = 0; i < n; i++)
-            if (!L->mask[row + (size_t)i])
-                f->phi[row + (size_t)i] += e[row + fg_split(n, i)];
+    const size_t n = (size_t)L->n[0], ne = (n + 1) / 2;
+    for (size_t row = 0; row < L->count; row += n) {
+        double *phi = f->phi + row;
+        const uint8_t *m = L->mask + row;
+        const float *even = e + row, *odd = e + row + ne;
+        for (size_t u = 0; u < ne; u++)
+            if (!m[2 * u])
+                phi[2 * u] += even[u];
+        for (size_t u = 0; u < n / 2; u++)
+            if (!m[2 * u + 1])
+                phi[2 * u + 1] += odd[u];
+    }
 }
 
 static double dot(const float *a, const float *b, size_t n)
