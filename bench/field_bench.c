@@ -160,7 +160,7 @@ static void discharge_rows(FILE *out, fg_preset preset, int size)
     double md = bench_median(dbm, 3) * 1e3;
     fprintf(out, "dbm,65,%s,cold,3,%.3f,%d,,DBM growth after a cold solve (%zu nodes last)\n",
             name, md, rep.solver_iterations, rep.nodes);
-    printf("%s DBM at 65^3: %.1f ms (%d CG iterations, %zu nodes last seed)\n", name, md,
+    printf("%s DBM at 65^3: %.1f ms (%d solver iterations, %zu nodes last seed)\n", name, md,
            rep.solver_iterations, rep.nodes);
     fg_tree_destroy(tree);
     fg_field_destroy(f);
