@@ -65,8 +65,8 @@ typedef struct wav_sink {
     progress line;
 } wav_sink;
 
-static int write_block(void *context, float *const *planes, uint32_t frames, char *err,
-                       size_t err_size)
+static fg_result write_block(void *context, float *const *planes, uint32_t frames, char *err,
+                             size_t err_size)
 {
     wav_sink *w = context;
     audio_interleave(planes, w->s->channels, frames, (float)w->s->gain, w->interleaved);
@@ -74,11 +74,11 @@ static int write_block(void *context, float *const *planes, uint32_t frames, cha
     w->peak = audio_peak(w->interleaved, n, w->peak);
     if (sf_writef_float(w->wav, w->interleaved, frames) != frames) {
         snprintf(err, err_size, "writing the WAV: %s", sf_strerror(w->wav));
-        return -1;
+        return FG_ERR_IO;
     }
     w->frames += frames;
     progress_update(&w->line, (double)w->frames / w->s->sample_rate_hz, monotonic_now_ns());
-    return 0;
+    return FG_OK;
 }
 
 /* What one file's render gives the manifest. */
@@ -108,7 +108,7 @@ static int render_file(const scene *s, const char *label, const char *out_path, 
     progress_begin(&w.line, terminal, label, s->duration_s, "s of sound", t0);
     scene_render_sink sink = {write_block, &w};
     scene_render_report rep;
-    int ok = w.wav && scene_render(s, &sink, &rep, err, sizeof err) == 0;
+    int ok = w.wav && scene_render(s, &sink, &rep, err, sizeof err) == FG_OK;
     progress_end(&w.line);
     if (w.wav && sf_close(w.wav) != 0 && ok) {
         snprintf(err, sizeof err, "%s: closing the WAV failed", out_path);

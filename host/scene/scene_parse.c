@@ -161,36 +161,50 @@ int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err
     return scene_parse_with(text, size, NULL, 0, out, err, err_size);
 }
 
-int scene_load_with(const char *path, const char *const *sets, size_t set_count, scene *out,
-                    char *err, size_t err_size)
+int scene_read_file(const char *path, char **text, size_t *size, char *err, size_t err_size)
 {
-    memset(out, 0, sizeof *out);
+    *text = NULL;
+    *size = 0;
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, err_size, "%s: cannot open: %s", path, strerror(errno));
         return -1;
     }
-    char *text = NULL;
-    size_t size = 0, cap = 0;
+    char *buf = NULL;
+    size_t n = 0, cap = 0;
     for (;;) {
-        if (size == cap) {
-            char *grown = fg_array_grow(text, &cap, size + 1, 1, 65536);
+        if (n == cap) {
+            char *grown = fg_array_grow(buf, &cap, n + 1, 1, 65536);
             if (!grown)
                 break;
-            text = grown;
+            buf = grown;
         }
-        size_t got = fread(text + size, 1, cap - size, f);
-        size += got;
+        size_t got = fread(buf + n, 1, cap - n, f);
+        n += got;
         if (got == 0)
             break;
     }
-    int failed = ferror(f) || size == cap;
+    int failed = ferror(f) || n == cap;
     fclose(f);
-    int rc = -1;
-    if (failed)
+    if (failed) {
+        free(buf);
         snprintf(err, err_size, "%s: cannot read the file", path);
-    else
-        rc = scene_parse_with(text, size, sets, set_count, out, err, err_size);
+        return -1;
+    }
+    *text = buf;
+    *size = n;
+    return 0;
+}
+
+int scene_load_with(const char *path, const char *const *sets, size_t set_count, scene *out,
+                    char *err, size_t err_size)
+{
+    memset(out, 0, sizeof *out);
+    char *text;
+    size_t size;
+    if (scene_read_file(path, &text, &size, err, err_size) != 0)
+        return -1;
+    int rc = scene_parse_with(text, size, sets, set_count, out, err, err_size);
     free(text);
     return rc;
 }

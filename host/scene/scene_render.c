@@ -14,7 +14,7 @@ typedef struct render_job {
     size_t segments;
 } render_job;
 
-static int create_engine(render_job *job, char *err, size_t err_size)
+static fg_result create_engine(render_job *job, char *err, size_t err_size)
 {
     const scene *s = job->s;
     for (size_t i = 0; i < s->discharge_count; i++)
@@ -27,20 +27,20 @@ static int create_engine(render_job *job, char *err, size_t err_size)
     if (r != FG_OK) {
         snprintf(err, err_size, "engine for %zu discharges and %zu segments: %s",
                  s->discharge_count, job->segments, fg_result_str(r));
-        return -1;
+        return r;
     }
     job->order = scene_post_order(s);
     for (uint32_t ch = 0; ch < s->channels; ch++)
         job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float));
     if (!job->order || !job->planes[0] || (s->channels == 2 && !job->planes[1])) {
         snprintf(err, err_size, "out of memory");
-        return -1;
+        return FG_ERR_NO_MEMORY;
     }
-    return 0;
+    return FG_OK;
 }
 
 /* Posts every discharge whose emit time falls before horizon_s. */
-static int post_due(render_job *job, double horizon_s, char *err, size_t err_size)
+static fg_result post_due(render_job *job, double horizon_s, char *err, size_t err_size)
 {
     for (; job->next < job->s->discharge_count; job->next++) {
         size_t i = job->order[job->next];
@@ -51,13 +51,13 @@ static int post_due(render_job *job, double horizon_s, char *err, size_t err_siz
         if (r != FG_OK) {
             snprintf(err, err_size, "discharges[%zu]: the engine refused it: %s", i,
                      fg_result_str(r));
-            return -1;
+            return r;
         }
     }
-    return 0;
+    return FG_OK;
 }
 
-static int run(render_job *job, const scene_render_sink *sink, scene_render_report *report,
+static fg_result run(render_job *job, const scene_render_sink *sink, scene_render_report *report,
                char *err, size_t err_size)
 {
     const scene *s = job->s;
@@ -73,38 +73,40 @@ static int run(render_job *job, const scene_render_sink *sink, scene_render_repo
         if (r != FG_OK) {
             snprintf(err, err_size, "listener at %.6f s: %s (forward and up interpolate to "
                                     "parallel directions?)", t, fg_result_str(r));
-            return -1;
+            return r;
         }
         uint32_t n = limit - frame < s->block_frames ? (uint32_t)(limit - frame) : s->block_frames;
-        if (post_due(job, t + n / rate + SCENE_POST_LEAD_S, err, err_size) != 0)
-            return -1;
+        if ((r = post_due(job, t + n / rate + SCENE_POST_LEAD_S, err, err_size)) != FG_OK)
+            return r;
         r = fg_engine_render(job->engine, job->planes, n);
         if (r != FG_OK) {
             snprintf(err, err_size, "render at %.6f s: %s", t, fg_result_str(r));
-            return -1;
+            return r;
         }
-        if (sink->block(sink->context, job->planes, n, err, err_size) != 0)
-            return -1;
+        if ((r = sink->block(sink->context, job->planes, n, err, err_size)) != FG_OK)
+            return r;
         fg_engine_collect(job->engine);
         report->frames += n;
         fg_engine_get_report(job->engine, &report->engine);
         if (s->duration_s == 0 && job->next == s->discharge_count &&
             report->engine.finished == s->discharge_count)
-            return 0;
+            return FG_OK;
     }
     report->capped = s->duration_s == 0;
-    return 0;
+    return FG_OK;
 }
 
-int scene_render(const scene *s, const scene_render_sink *sink, scene_render_report *report,
-                 char *err, size_t err_size)
+fg_result scene_render(const scene *s, const scene_render_sink *sink,
+                       scene_render_report *report, char *err, size_t err_size)
 {
     scene_render_report local;
     if (!report)
         report = &local;
     *report = (scene_render_report){0};
     render_job job = {.s = s};
-    int rc = create_engine(&job, err, err_size) == 0 ? run(&job, sink, report, err, err_size) : -1;
+    fg_result rc = create_engine(&job, err, err_size);
+    if (rc == FG_OK)
+        rc = run(&job, sink, report, err, err_size);
     report->segments = job.segments;
     if (job.engine)
         fg_engine_get_report(job.engine, &report->engine);

@@ -24,10 +24,11 @@
 /* Where the blocks go. */
 typedef struct scene_render_sink {
     /* Takes frames of each of the scene's channels, planes[ch][0..frames),
-     * in pascals (the scene's gain is the sink's to apply). Returns 0 to go
-     * on, or -1 with a message in err to stop the render. */
-    int (*block)(void *context, float *const *planes, uint32_t frames, char *err,
-                 size_t err_size);
+     * in pascals (the scene's gain is the sink's to apply). Returns FG_OK to
+     * go on, or the reason to stop the render (FG_ERR_IO, FG_ERR_NO_MEMORY)
+     * with a message in err. */
+    fg_result (*block)(void *context, float *const *planes, uint32_t frames, char *err,
+                       size_t err_size);
     void *context;
 } scene_render_sink;
 
@@ -39,11 +40,12 @@ typedef struct scene_render_report {
 } scene_render_report;
 
 /* Renders s, which scene_build has built, into sink; *report (may be NULL)
- * receives what was rendered, also on an error. Returns 0, or -1 with a
- * message in err: the engine could not be made for the scene (or memory
- * ran out), the engine refused a discharge or a listener pose ("discharges[3]:
- * the engine refused it: ..."), or the sink stopped. [main-thread] */
-int scene_render(const scene *s, const scene_render_sink *sink, scene_render_report *report,
-                 char *err, size_t err_size);
+ * receives what was rendered, also on an error. Returns FG_OK, or with a
+ * message in err: the engine's code when it could not be made for the
+ * scene or refused a discharge or a listener pose ("discharges[3]: the
+ * engine refused it: ..."); FG_ERR_NO_MEMORY; the sink's code when it
+ * stopped. [main-thread] */
+fg_result scene_render(const scene *s, const scene_render_sink *sink,
+                       scene_render_report *report, char *err, size_t err_size);
 
 #endif
