@@ -31,8 +31,8 @@ static const char about[] =
     "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n"
     "Several scenes: -o names a directory (SCENE's NAME.wav in it) or a pattern with\n"
     "{name} and {index} (out/{name}-{index}.wav). Every scene is read and checked\n"
-    "before the first is rendered. On a terminal a render longer than 2 s shows its\n"
-    "progress (docs/batch.md).\n";
+    "before the first is rendered. On a terminal, work longer than 2 s shows a\n"
+    "progress line (docs/batch.md).\n";
 
 static const char notes[] =
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
@@ -62,7 +62,7 @@ typedef struct wav_sink {
     float *interleaved;
     float peak;
     uint64_t frames;
-    progress line;
+    progress *line;
 } wav_sink;
 
 static fg_result write_block(void *context, float *const *planes, uint32_t frames, char *err,
@@ -77,7 +77,7 @@ static fg_result write_block(void *context, float *const *planes, uint32_t frame
         return FG_ERR_IO;
     }
     w->frames += frames;
-    progress_update(&w->line, (double)w->frames / w->s->sample_rate_hz, monotonic_now_ns());
+    progress_update(w->line, (double)w->frames / w->s->sample_rate_hz, monotonic_now_ns());
     return FG_OK;
 }
 
@@ -87,29 +87,29 @@ typedef struct render_result {
     float peak;
 } render_result;
 
-/* Renders s into out_path (complete, or no file). The summary line goes to
- * `summary` (NULL: none); the progress line to `terminal` (NULL: none). */
-static int render_file(const scene *s, const char *label, const char *out_path, FILE *summary,
-                       FILE *terminal, render_result *result)
+/* Renders s into out_path (complete, or no file), updating line. The
+ * summary line goes to `summary` (NULL: none). */
+static int render_file(const scene *s, const char *out_path, FILE *summary, progress *line,
+                       render_result *result)
 {
     char err[512];
     uint64_t t0 = monotonic_now_ns();
-    wav_sink w = {.s = s, .path = out_path};
+    wav_sink w = {.s = s, .path = out_path, .line = line};
     w.interleaved = malloc((size_t)s->block_frames * s->channels * sizeof(float));
     temp_file out;
     if (!w.interleaved || temp_file_open(&out, out_path, err, sizeof err) != 0) {
         if (!w.interleaved)
             snprintf(err, sizeof err, "out of memory");
         free(w.interleaved);
+        progress_clear(line);
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
     }
     w.wav = audio_wav_open(out.fd, out_path, s->sample_rate_hz, s->channels, err, sizeof err);
-    progress_begin(&w.line, terminal, label, s->duration_s, "s of sound", t0);
     scene_render_sink sink = {write_block, &w};
     scene_render_report rep;
     int ok = w.wav && scene_render(s, &sink, &rep, err, sizeof err) == FG_OK;
-    progress_end(&w.line);
+    progress_clear(line);
     if (w.wav && sf_close(w.wav) != 0 && ok) {
         snprintf(err, sizeof err, "%s: closing the WAV failed", out_path);
         ok = 0;
@@ -174,10 +174,16 @@ static int load_scenes(const render_args *a, scene *scenes)
 /* Builds and renders scene i (and its picture); its manifest line to
  * manifest (may be NULL). */
 static int render_one(const render_args *a, size_t i, scene *s, char *const *wavs,
-                      char *const *pngs, FILE *manifest)
+                      char *const *pngs, FILE *manifest, progress *line)
 {
-    char err[512];
+    char err[512], label[300];
+    if (a->scene_count > 1)
+        snprintf(label, sizeof label, "[%zu/%zu] %s", i + 1, a->scene_count, a->scenes[i]);
+    else
+        snprintf(label, sizeof label, "%s", a->scenes[i]);
+    progress_item(line, label, s->duration_s, monotonic_now_ns());
     if (scene_build(s, err, sizeof err) != 0) {
+        progress_clear(line);
         if (a->scene_count > 1)
             fprintf(stderr, "fulgur: %s: %s\n", a->scenes[i], err);
         else
@@ -185,9 +191,8 @@ static int render_one(const render_args *a, size_t i, scene *s, char *const *wav
         return CLI_USAGE;
     }
     FILE *summary = a->quiet ? NULL : a->manifest && !strcmp(a->manifest, "-") ? stderr : stdout;
-    FILE *terminal = !a->quiet && isatty(fileno(stderr)) ? stderr : NULL;
     render_result result = {0};
-    int rc = render_file(s, a->scenes[i], wavs[i], summary, terminal, &result);
+    int rc = render_file(s, wavs[i], summary, line, &result);
 #ifdef FULGUR_HAVE_GPU
     if (rc == CLI_OK && pngs && render_picture(s, pngs[i], a->png_time, err, sizeof err) != 0) {
         fprintf(stderr, "fulgur: %s\n", err);
@@ -242,10 +247,14 @@ static int render_all(const render_args *a, scene *scenes, char *const *wavs, ch
             scene_deinit(&scenes[i]);
         return CLI_RUNTIME;
     }
+    progress line;
+    progress_begin(&line, !a->quiet && isatty(fileno(stderr)) ? stderr : NULL, "s of sound",
+                   monotonic_now_ns());
     int rc = CLI_OK;
     size_t i = 0;
     for (; i < a->scene_count && rc == CLI_OK; i++)
-        rc = render_one(a, i, &scenes[i], wavs, pngs, manifest);
+        rc = render_one(a, i, &scenes[i], wavs, pngs, manifest, &line);
+    progress_clear(&line);
     for (; i < a->scene_count; i++)
         scene_deinit(&scenes[i]);
     if (manifest && manifest != stdout) {

@@ -1,11 +1,17 @@
 /* The progress line: carriage returns, no terminal escapes. */
 #include "progress.h"
 
-void progress_begin(progress *p, FILE *to, const char *label, double total, const char *unit,
-                    uint64_t now_ns)
+void progress_begin(progress *p, FILE *to, const char *unit, uint64_t now_ns)
 {
-    *p = (progress){.to = to, .label = label, .total = total, .unit = unit, .start_ns = now_ns,
+    *p = (progress){.to = to, .unit = unit, .label = "", .item_ns = now_ns,
                     .next_ns = now_ns + (uint64_t)(PROGRESS_AFTER_S * 1e9)};
+}
+
+void progress_item(progress *p, const char *label, double total, uint64_t now_ns)
+{
+    p->label = label;
+    p->total = total;
+    p->item_ns = now_ns;
 }
 
 bool progress_update(progress *p, double done, uint64_t now_ns)
@@ -13,7 +19,7 @@ bool progress_update(progress *p, double done, uint64_t now_ns)
     if (!p->to || now_ns < p->next_ns)
         return false;
     p->next_ns = now_ns + (uint64_t)(PROGRESS_EVERY_S * 1e9);
-    double wall = (double)(now_ns - p->start_ns) * 1e-9;
+    double wall = (double)(now_ns - p->item_ns) * 1e-9;
     int n;
     if (p->total > 0 && done > 0) {
         double left = wall * (p->total - done) / done;
@@ -33,7 +39,7 @@ bool progress_update(progress *p, double done, uint64_t now_ns)
     return true;
 }
 
-void progress_end(progress *p)
+void progress_clear(progress *p)
 {
     if (p->to && p->width > 0) {
         fprintf(p->to, "\r%*s\r", p->width, "");
