@@ -68,7 +68,7 @@ SLURM_ARRAY_TASK_ID=51 sh examples/sweep/slurm_array.sh "$sweep" "$tmp/slurm" 2>
 [ $? -eq 2 ] && grep -q "has no row 51" "$tmp/err" || bad "task 51: $(cat "$tmp/err")"
 
 # a bad row: the sweep stops, no manifest
-{ head -3 "$sweep"; printf 'wet\texamples/lightning_3km.json\t1\t800\t150\n'; } > "$tmp/bad.tsv"
+{ head -3 "$sweep"; printf 'wet\texamples/sweep/thunder.json\t1\t800\t150\n'; } > "$tmp/bad.tsv"
 sh examples/sweep/render_sweep.sh "$tmp/bad.tsv" "$tmp/bad" -j2 2>"$tmp/err" &&
     bad "a sweep with humidity 150 succeeded"
 grep -q "humidity" "$tmp/err" || bad "the bad row's message: $(cat "$tmp/err")"
