@@ -8,7 +8,7 @@ fulgur_install_deps() {
               libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
               libglfw3-dev xvfb xauth python3
               python3-cffi python3-numpy python3-pytest python3-venv python3-pip
-              python3-setuptools python3-wheel parallel
+              python3-setuptools python3-wheel parallel rsync
               ${FULGUR_DEPS_EXTRA:-})
   local missing=()
   for p in "${pkgs[@]}"; do

@@ -6,6 +6,9 @@
 #  - the manifest: 50 lines in the sweep's order, each the single render's
 #    line (scene, set, seed, frames, duration, peak, calibration) but for
 #    the output path; nearer bolts are louder for every seed;
+#  - six rows over --sshlogin on two stand-in nodes (ssh replaced by a
+#    script that runs the command locally in the node's home; rsync real)
+#    give the same files and manifest lines, and leave nothing on the nodes;
 #  - the Slurm array script (sh -n; run here as task 7 would be) gives row
 #    7's bytes; a bad row stops the sweep with no manifest.
 set -u
@@ -55,6 +58,48 @@ awk -F'[:,]' '{
     for (s in near) { n++; if (!(near[s] > far[s])) { print "seed " s ": " near[s] " <= " far[s]; bad = 1 } }
     exit bad || n != 5
 }' "$tmp/par/manifest.jsonl" || bad "peaks do not fall from 500 m to 5000 m"
+
+# many machines: --sshlogin over two "nodes" through a stand-in for ssh
+# that runs each command here, in the node's own home ($tmp/nodes/NODE),
+# with the options docs/batch.md gives: the row script, the scene sent, the
+# files and manifest lines returned (rsync), the nodes' copies removed
+mkdir -p "$tmp/work/examples/sweep" "$tmp/bin"
+cp examples/sweep/*.sh examples/sweep/thunder.json "$tmp/work/examples/sweep/"
+head -7 "$sweep" > "$tmp/work/six.tsv"
+ln -s "$fulgur" "$tmp/bin/fulgur"
+cat > "$tmp/ssh" <<'SSH'
+#!/bin/sh
+while [ $# -gt 0 ]; do
+    case $1 in
+        -o|-p|-l|-i|-S|-O|-F) shift 2 ;;
+        -*) shift ;;
+        *) break ;;
+    esac
+done
+node=$1
+shift
+[ "${1:-}" = "--" ] && shift
+echo "$node" >> "$NODES/calls"
+mkdir -p "$NODES/$node" && cd "$NODES/$node" && HOME=$NODES/$node exec sh -c "$*"
+SSH
+mkdir "$tmp/nodes"
+(cd "$tmp/work" && env -u FULGUR NODES="$tmp/nodes" PATH="$tmp/bin:$PATH" \
+    sh examples/sweep/render_sweep.sh six.tsv out --ssh "sh $tmp/ssh" \
+    --sshlogin 1/node1,1/node2 --basefile examples/sweep/render_row.sh \
+    --transferfile {scene} --return out/{name}.wav --return out/rows/{name}.jsonl --cleanup) \
+    > "$tmp/ssh.log" 2>&1 || bad "the sweep over --sshlogin: $(cat "$tmp/ssh.log")"
+for node in node1 node2; do
+    grep -qx "$node" "$tmp/nodes/calls" || bad "--sshlogin: nothing ran on $node"
+    [ -z "$(find "$tmp/nodes/$node" -type f)" ] ||
+        bad "--cleanup left files on $node: $(find "$tmp/nodes/$node" -type f)"
+done
+tail -n +2 "$tmp/work/six.tsv" | cut -f1 | while IFS= read -r name; do
+    cmp -s "$tmp/work/out/$name.wav" "$tmp/par/$name.wav" ||
+        echo "FAIL: --sshlogin: $name.wav differs from the local sweep's"
+done > "$tmp/ssh_rows.log"
+[ ! -s "$tmp/ssh_rows.log" ] || { cat "$tmp/ssh_rows.log"; fail=1; }
+sed "s|\"output\":\"$tmp/par/|\"output\":\"out/|" "$tmp/par/manifest.jsonl" | head -6 |
+    cmp -s - "$tmp/work/out/manifest.jsonl" || bad "--sshlogin: the manifest differs"
 
 # the Slurm array script, as task 7 runs it
 sh -n examples/sweep/slurm_array.sh || bad "slurm_array.sh: syntax"
