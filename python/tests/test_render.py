@@ -3,6 +3,7 @@ the same messages, from one parser and one render loop."""
 import glob
 import json
 import os
+import threading
 
 import numpy as np
 import pytest
@@ -115,3 +116,29 @@ def test_dict_errors_name_the_path():
         fulgur.render(scene)
     with pytest.raises(fulgur.SceneError, match="sample_rate"):
         fulgur.render({**scene, "sample_rate": 1000})
+
+
+def test_scenes_render_on_threads_at_once():
+    """Different scenes on different threads at once (the GIL is released
+    in the C calls) give what each gives alone."""
+    seeds = [1, 2, 3, 4]
+    path = example("lightning_3km.json")
+    alone = [fulgur.render(path, {"seed": s})[0] for s in seeds]
+    results = [None] * len(seeds)
+    errors = []
+
+    def work(i):
+        try:
+            results[i] = fulgur.render(path, {"seed": seeds[i]})[0]
+        except Exception as e:  # reported below, not lost in the thread
+            errors.append(e)
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(len(seeds))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors
+    for i in range(len(seeds)):
+        assert results[i].tobytes() == alone[i].tobytes(), seeds[i]
+    assert alone[0].tobytes() != alone[1].tobytes()
