@@ -12,6 +12,8 @@ for b in build-bench/bench/bench_*; do
   echo "== ${b##*/}"
   "$b"
 done
+echo "== python_render"
+PYTHONPATH=build-bench/python python3 bench/python_render.py build-bench/host/fulgur
 for p in bench/plots/*.gp; do
   gnuplot "$p"
 done

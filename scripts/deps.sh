@@ -7,6 +7,8 @@ fulgur_install_deps() {
               libclang-rt-14-dev lv2-dev liblilv-dev sordi
               libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
               libglfw3-dev libfreetype-dev libfontconfig-dev fonts-dejavu-core xvfb xauth python3
+              python3-cffi python3-numpy python3-pytest python3-venv python3-pip
+              python3-setuptools python3-wheel parallel rsync
               ${FULGUR_DEPS_EXTRA:-})
   local missing=()
   for p in "${pkgs[@]}"; do

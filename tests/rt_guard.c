@@ -19,13 +19,16 @@
  * the runtimes', not ours. */
 #define _GNU_SOURCE
 #include <dlfcn.h>
+#include <execinfo.h>
 #include <fcntl.h>
+#include <link.h>
 #include <malloc.h>
 #include <pthread.h>
 #include <sched.h>
 #include <semaphore.h>
 #include <stdarg.h>
 #include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <sys/uio.h>
@@ -39,11 +42,73 @@ enum kind { KIND_ALLOC, KIND_LOCK, KIND_IO, KIND_SLEEP };
 
 static _Thread_local bool armed;
 static _Thread_local rt_guard_counts counted;
+/* rt_guard_arm_within: the object's address range; [0, 0) for everything */
+static _Thread_local uintptr_t scope_lo, scope_hi;
+static _Thread_local bool walking; /* in backtrace(): its own calls are ours */
 
 void rt_guard_arm(void)
 {
     counted = (rt_guard_counts){0};
+    scope_lo = scope_hi = 0;
     armed = true;
+}
+
+typedef struct object_range {
+    uintptr_t code, lo, hi;
+} object_range;
+
+/* dl_iterate_phdr's callback: the span of the PT_LOAD segments of the
+ * object holding range->code. */
+static int find_object(struct dl_phdr_info *info, size_t size, void *data)
+{
+    (void)size;
+    object_range *r = data;
+    uintptr_t lo = UINTPTR_MAX, hi = 0;
+    for (int i = 0; i < info->dlpi_phnum; i++) {
+        const ElfW(Phdr) *ph = &info->dlpi_phdr[i];
+        if (ph->p_type != PT_LOAD)
+            continue;
+        uintptr_t a = info->dlpi_addr + ph->p_vaddr, b = a + ph->p_memsz;
+        lo = a < lo ? a : lo;
+        hi = b > hi ? b : hi;
+    }
+    if (r->code < lo || r->code >= hi)
+        return 0;
+    r->lo = lo;
+    r->hi = hi;
+    return 1;
+}
+
+int rt_guard_arm_within(const void *code)
+{
+    object_range r = {(uintptr_t)code, 0, 0};
+    dl_iterate_phdr(find_object, &r);
+    if (r.hi == 0)
+        return -1;
+    /* backtrace() loads its unwinder at the first call: here, unarmed */
+    void *warm[4];
+    backtrace(warm, 4);
+    rt_guard_arm();
+    scope_lo = r.lo;
+    scope_hi = r.hi;
+    return 0;
+}
+
+/* Whether the calling stack passes through the scope's object. */
+static bool from_scope(void)
+{
+    if (scope_hi == 0)
+        return true;
+    if (walking)
+        return false;
+    walking = true;
+    void *frames[128];
+    int n = backtrace(frames, 128);
+    walking = false;
+    for (int i = 0; i < n; i++)
+        if ((uintptr_t)frames[i] >= scope_lo && (uintptr_t)frames[i] < scope_hi)
+            return true;
+    return false;
 }
 
 rt_guard_counts rt_guard_disarm(void)
@@ -59,7 +124,7 @@ unsigned long rt_guard_total(const rt_guard_counts *c)
 
 static void note(enum kind kind, const char *name)
 {
-    if (!armed)
+    if (!armed || !from_scope())
         return;
     unsigned long *slot[] = {&counted.alloc, &counted.lock, &counted.io, &counted.sleep};
     ++*slot[kind];

@@ -26,6 +26,15 @@ typedef struct rt_guard_counts {
 /* Starts counting on the calling thread, from zero. */
 void rt_guard_arm(void);
 
+/* As rt_guard_arm, but a call counts only when a frame of its stack lies in
+ * the loaded object (shared library or executable) that holds code: what
+ * that library does, directly or through libc, and not what its caller
+ * does around it. For a library driven from an interpreter (the Python
+ * package's test, with this file built as an LD_PRELOAD module), whose own
+ * allocations are not the library's. A code address in no object arms
+ * nothing and returns -1; else 0. */
+int rt_guard_arm_within(const void *code);
+
 /* Stops counting on the calling thread and returns what it counted since
  * rt_guard_arm. */
 rt_guard_counts rt_guard_disarm(void);

@@ -1,5 +1,7 @@
 /* The interposer catches what the audio thread must never do, at the
  * release optimisation level, and counts only the armed thread. */
+#define _GNU_SOURCE /* RTLD_DEFAULT */
+#include <dlfcn.h>
 #include <math.h>
 #include <pthread.h>
 #include <setjmp.h>
@@ -80,6 +82,31 @@ static void test_arm_window(void **state)
     assert_null(fresh.first);
 }
 
+/* Scoped to an object: the planted malloc counts when armed within the
+ * executable that holds it, not when armed within libm, which its stack
+ * does not pass through. */
+static void test_arm_within(void **state)
+{
+    (void)state;
+    float out[FRAMES] = {0};
+    assert_int_equal(rt_guard_arm_within((const void *)planted_malloc), 0);
+    planted_malloc(out, FRAMES);
+    rt_guard_counts mine = rt_guard_disarm();
+    free(planted_leak);
+    assert_int_equal(mine.alloc, 1);
+    assert_string_equal(mine.first, "malloc");
+    const void *in_libm = dlsym(RTLD_DEFAULT, "cosf");
+    assert_non_null(in_libm);
+    assert_int_equal(rt_guard_arm_within(in_libm), 0);
+    planted_malloc(out, FRAMES);
+    rt_guard_counts libm = rt_guard_disarm();
+    free(planted_leak);
+    assert_int_equal(rt_guard_total(&libm), 0);
+    assert_null(libm.first);
+    assert_int_equal(rt_guard_arm_within(NULL), -1);
+    (void)rt_guard_disarm();
+}
+
 #define OTHER_ALLOCS 1000
 
 typedef struct other_thread {
@@ -128,6 +155,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_planted),
         cmocka_unit_test(test_arm_window),
+        cmocka_unit_test(test_arm_within),
         cmocka_unit_test(test_threads_counted_apart),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

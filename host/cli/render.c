@@ -1,248 +1,342 @@
-/* fulgur render: a scene through the real-time engine, block by block, into
- * a 32-bit float WAV. The engine is driven exactly as a device callback
- * would drive it; nothing else synthesizes sound. */
+/* fulgur render: scenes through the real-time engine (scene/scene_render.h,
+ * the loop libfulgur-scene shares), each into a 32-bit float WAV. */
+#define _POSIX_C_SOURCE 200809L /* fileno */
 #include <math.h>
 #include <sndfile.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 
 #include "common/audio_file.h"
 #include "common/clock.h"
 #include "common/commands.h"
 #include "common/options.h"
+#include "common/progress.h"
 #include "common/temp_file.h"
+#include "render_manifest.h"
+#include "render_output.h"
 #include "scene/scene.h"
+#include "scene/scene_render.h"
 #ifdef FULGUR_HAVE_GPU
 #include "render_picture.h"
 #endif
 
-/* Discharges are posted this long before their emit time, so the engine
- * prepares them off the audio path, as a simulation thread would. */
-#define POST_LEAD_S 0.5
+/* --set at most, per call. */
+#define MAX_SETS 256
 
 static const char about[] =
-    "Renders the scene (docs/scene-format.md) through fg_engine_render in blocks of the\n"
-    "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n";
+    "Renders each scene (docs/scene-format.md) through fg_engine_render in blocks of the\n"
+    "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n"
+    "Several scenes: -o names a directory (SCENE's NAME.wav in it) or a pattern with\n"
+    "{name} and {index} (out/{name}-{index}.wav). Every scene is read and checked\n"
+    "before the first is rendered. On a terminal, work longer than 2 s shows a\n"
+    "progress line (docs/batch.md).\n";
 
 static const char notes[] =
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
 
-typedef struct render_job {
+/* The --set values, in order. */
+typedef struct set_list {
+    const char *items[MAX_SETS];
+    size_t count;
+} set_list;
+
+static int add_set(const char *text, void *value, char *why, size_t why_size)
+{
+    set_list *list = value;
+    if (list->count == MAX_SETS) {
+        snprintf(why, why_size, "more than %d --set", MAX_SETS);
+        return -1;
+    }
+    list->items[list->count++] = text;
+    return 0;
+}
+
+/* What the sink writes a scene's blocks into. */
+typedef struct wav_sink {
     const scene *s;
-    fg_engine *engine;
-    size_t *order;          /* the discharge indices by emit time, then index */
-    size_t next;            /* the next of order to post */
-    float *planes[2];
-    float *interleaved;
     SNDFILE *wav;
-    size_t segments;
-} render_job;
+    const char *path;
+    float *interleaved;
+    float peak;
+    uint64_t frames;
+    progress *line;
+} wav_sink;
 
-static int create_engine(render_job *job, char *err, size_t err_size)
+static fg_result write_block(void *context, float *const *planes, uint32_t frames, char *err,
+                             size_t err_size)
 {
-    const scene *s = job->s;
-    for (size_t i = 0; i < s->discharge_count; i++)
-        job->segments += s->discharges[i].post.node_count - 1;
-    fg_engine_config cfg;
-    scene_engine_config(s, &cfg);
-    cfg.max_voices = (uint32_t)s->discharge_count;
-    cfg.segment_capacity = job->segments > UINT32_MAX ? UINT32_MAX : (uint32_t)job->segments;
-    fg_result r = fg_engine_create(&cfg, &job->engine);
-    if (r != FG_OK) {
-        snprintf(err, err_size, "engine for %zu discharges and %zu segments: %s",
-                 s->discharge_count, job->segments, fg_result_str(r));
-        return -1;
+    wav_sink *w = context;
+    audio_interleave(planes, w->s->channels, frames, (float)w->s->gain, w->interleaved);
+    size_t n = (size_t)frames * w->s->channels;
+    w->peak = audio_peak(w->interleaved, n, w->peak);
+    if (sf_writef_float(w->wav, w->interleaved, frames) != frames) {
+        snprintf(err, err_size, "writing the WAV: %s", sf_strerror(w->wav));
+        return FG_ERR_IO;
     }
-    job->order = scene_post_order(s);
-    job->interleaved = malloc((size_t)s->block_frames * s->channels * sizeof(float));
-    for (uint32_t ch = 0; ch < s->channels; ch++)
-        job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float));
-    if (!job->order || !job->interleaved || !job->planes[0] ||
-        (s->channels == 2 && !job->planes[1])) {
-        snprintf(err, err_size, "out of memory");
-        return -1;
-    }
-    return 0;
+    w->frames += frames;
+    progress_update(w->line, (double)w->frames / w->s->sample_rate_hz, monotonic_now_ns());
+    return FG_OK;
 }
 
-/* Posts every discharge whose emit time falls before horizon_s. */
-static int post_due(render_job *job, double horizon_s, char *err, size_t err_size)
-{
-    for (; job->next < job->s->discharge_count; job->next++) {
-        size_t i = job->order[job->next];
-        const scene_discharge *d = &job->s->discharges[i];
-        if (d->post.emit_time_s >= horizon_s)
-            break;
-        fg_result r = fg_engine_post(job->engine, &d->post, NULL);
-        if (r != FG_OK) {
-            snprintf(err, err_size, "discharges[%zu]: the engine refused it: %s", i,
-                     fg_result_str(r));
-            return -1;
-        }
-    }
-    return 0;
-}
+/* What one file's render gives the manifest. */
+typedef struct render_result {
+    uint64_t frames;
+    float peak;
+} render_result;
 
-static int write_block(render_job *job, uint32_t frames, char *err, size_t err_size)
-{
-    audio_interleave(job->planes, job->s->channels, frames, (float)job->s->gain, job->interleaved);
-    if (sf_writef_float(job->wav, job->interleaved, frames) != frames) {
-        snprintf(err, err_size, "writing the WAV: %s", sf_strerror(job->wav));
-        return -1;
-    }
-    return 0;
-}
-
-/* The block loop; *frames_out receives the frames written. */
-static int run(render_job *job, uint64_t *frames_out, char *err, size_t err_size)
-{
-    const scene *s = job->s;
-    double rate = s->sample_rate_hz;
-    uint64_t limit = (uint64_t)llround((s->duration_s > 0 ? s->duration_s : SCENE_MAX_DURATION_S) *
-                                       rate);
-    uint64_t frame = 0;
-    while (frame < limit) {
-        double t = (double)frame / rate;
-        fg_listener pose;
-        scene_listener_at(s, t, &pose);
-        fg_result r = fg_engine_set_listener(job->engine, &pose);
-        if (r != FG_OK) {
-            snprintf(err, err_size, "listener at %.6f s: %s (forward and up interpolate to "
-                                    "parallel directions?)", t, fg_result_str(r));
-            return -1;
-        }
-        uint32_t n = limit - frame < s->block_frames ? (uint32_t)(limit - frame) : s->block_frames;
-        if (post_due(job, t + n / rate + POST_LEAD_S, err, err_size) != 0)
-            return -1;
-        r = fg_engine_render(job->engine, job->planes, n);
-        if (r != FG_OK) {
-            snprintf(err, err_size, "render at %.6f s: %s", t, fg_result_str(r));
-            return -1;
-        }
-        if (write_block(job, n, err, err_size) != 0)
-            return -1;
-        fg_engine_collect(job->engine);
-        frame += n;
-        fg_engine_report stats;
-        fg_engine_get_report(job->engine, &stats);
-        if (s->duration_s == 0 && job->next == s->discharge_count &&
-            stats.finished == s->discharge_count)
-            break;
-    }
-    if (s->duration_s == 0 && frame == limit)
-        fprintf(stderr, "fulgur: stopped at the %.0f s cap with discharges still sounding\n",
-                SCENE_MAX_DURATION_S);
-    *frames_out = frame;
-    return 0;
-}
-
-static int open_wav(render_job *job, temp_file *out, char *err, size_t err_size)
-{
-    job->wav = audio_wav_open(out->fd, out->path, job->s->sample_rate_hz, job->s->channels, err,
-                              err_size);
-    return job->wav ? 0 : -1;
-}
-
-static void release(render_job *job)
-{
-    fg_engine_destroy(job->engine);
-    free(job->order);
-    free(job->interleaved);
-    free(job->planes[0]);
-    free(job->planes[1]);
-}
-
-static int render_file(const scene *s, const char *out_path)
+/* Renders s into out_path (complete, or no file), updating line. The
+ * summary line goes to `summary` (NULL: none). */
+static int render_file(const scene *s, const char *out_path, FILE *summary, progress *line,
+                       render_result *result)
 {
     char err[512];
-    render_job job = {.s = s};
-    temp_file out;
-    uint64_t frames = 0;
     uint64_t t0 = monotonic_now_ns();
-    int ok = create_engine(&job, err, sizeof err) == 0 &&
-             temp_file_open(&out, out_path, err, sizeof err) == 0;
-    if (!ok) {
-        release(&job);
+    wav_sink w = {.s = s, .path = out_path, .line = line};
+    w.interleaved = malloc((size_t)s->block_frames * s->channels * sizeof(float));
+    temp_file out;
+    if (!w.interleaved || temp_file_open(&out, out_path, err, sizeof err) != 0) {
+        if (!w.interleaved)
+            snprintf(err, sizeof err, "out of memory");
+        free(w.interleaved);
+        progress_clear(line);
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
     }
-    ok = open_wav(&job, &out, err, sizeof err) == 0 && run(&job, &frames, err, sizeof err) == 0;
-    if (job.wav && sf_close(job.wav) != 0 && ok) {
+    w.wav = audio_wav_open(out.fd, out_path, s->sample_rate_hz, s->channels, err, sizeof err);
+    scene_render_sink sink = {write_block, &w};
+    scene_render_report rep;
+    int ok = w.wav && scene_render(s, &sink, &rep, err, sizeof err) == FG_OK;
+    progress_clear(line);
+    if (w.wav && sf_close(w.wav) != 0 && ok) {
         snprintf(err, sizeof err, "%s: closing the WAV failed", out_path);
         ok = 0;
     }
+    free(w.interleaved);
     if (ok)
         ok = temp_file_commit(&out, err, sizeof err) == 0;
     else
         temp_file_abort(&out);
-    fg_engine_report stats;
-    fg_engine_get_report(job.engine, &stats);
-    release(&job);
     if (!ok) {
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
     }
+    if (rep.capped)
+        fprintf(stderr, "fulgur: stopped at the %.0f s cap with discharges still sounding\n",
+                SCENE_MAX_DURATION_S);
     double wall = (double)(monotonic_now_ns() - t0) * 1e-9;
-    double seconds = (double)frames / s->sample_rate_hz;
-    printf("%s: %zu discharges, %zu segments, %.3f s of sound (%u ch, %.0f Hz) in %.3f s wall, "
-           "%llu late events (%llu late samples)\n",
-           out_path, s->discharge_count, job.segments, seconds, (unsigned)s->channels,
-           s->sample_rate_hz, wall, (unsigned long long)stats.late_events,
-           (unsigned long long)stats.late_samples);
+    double seconds = (double)rep.frames / s->sample_rate_hz;
+    if (summary)
+        fprintf(summary,
+                "%s: %zu discharges, %zu segments, %.3f s of sound (%u ch, %.0f Hz) in %.3f s "
+                "wall, %llu late events (%llu late samples)\n",
+                out_path, s->discharge_count, rep.segments, seconds, (unsigned)s->channels,
+                s->sample_rate_hz, wall, (unsigned long long)rep.engine.late_events,
+                (unsigned long long)rep.engine.late_samples);
+    *result = (render_result){rep.frames, w.peak};
     return CLI_OK;
+}
+
+/* The command line, read and checked. */
+typedef struct render_args {
+    const char **scenes;
+    size_t scene_count;
+    const char *out;
+    const char *png;
+    double png_time;
+    option_size png_size; /* 0: not given (1280x720) */
+    const char *manifest;
+    bool quiet;
+    set_list sets;
+} render_args;
+
+/* Every scene read with the --set values; a bad one stops them all. "SCENE: "
+ * starts the message when there are several. */
+static int load_scenes(const render_args *a, scene *scenes)
+{
+    char err[512];
+    for (size_t i = 0; i < a->scene_count; i++) {
+        if (scene_load_with(a->scenes[i], a->sets.items, a->sets.count, &scenes[i], err,
+                            sizeof err) == 0)
+            continue;
+        if (a->scene_count > 1)
+            fprintf(stderr, "fulgur: %s: %s\n", a->scenes[i], err);
+        else
+            fprintf(stderr, "fulgur: %s\n", err);
+        for (size_t k = 0; k < i; k++)
+            scene_deinit(&scenes[k]);
+        return -1;
+    }
+    return 0;
+}
+
+/* Builds and renders scene i (and its picture); its manifest line to
+ * manifest (may be NULL). */
+static int render_one(const render_args *a, size_t i, scene *s, char *const *wavs,
+                      char *const *pngs, FILE *manifest, progress *line)
+{
+    char err[512], label[300];
+    if (a->scene_count > 1)
+        snprintf(label, sizeof label, "[%zu/%zu] %s", i + 1, a->scene_count, a->scenes[i]);
+    else
+        snprintf(label, sizeof label, "%s", a->scenes[i]);
+    progress_item(line, label, s->duration_s, monotonic_now_ns());
+    if (scene_build(s, err, sizeof err) != 0) {
+        progress_clear(line);
+        if (a->scene_count > 1)
+            fprintf(stderr, "fulgur: %s: %s\n", a->scenes[i], err);
+        else
+            fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_USAGE;
+    }
+    FILE *summary = a->quiet ? NULL : a->manifest && !strcmp(a->manifest, "-") ? stderr : stdout;
+    render_result result = {0};
+    int rc = render_file(s, wavs[i], summary, line, &result);
+#ifdef FULGUR_HAVE_GPU
+    bool sized = a->png_size.width != 0;
+    if (rc == CLI_OK && pngs &&
+        render_picture(s, pngs[i], a->png_time, sized ? a->png_size.width : 1280,
+                       sized ? a->png_size.height : 720, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        rc = CLI_RUNTIME;
+    }
+#else
+    (void)pngs;
+#endif
+    manifest_row row = {a->scenes[i], a->sets.items, a->sets.count, wavs[i], s, result.frames,
+                        result.peak};
+    if (rc == CLI_OK && manifest && manifest_write(manifest, &row) != 0) {
+        fprintf(stderr, "fulgur: writing the manifest failed\n");
+        rc = CLI_RUNTIME;
+    }
+    scene_deinit(s);
+    return rc;
+}
+
+/* The --manifest stream: stdout for "-", else a file that appears when
+ * every scene has rendered. */
+static int open_manifest(const char *path, temp_file *file, FILE **out, char *err,
+                         size_t err_size)
+{
+    *out = NULL;
+    if (!path)
+        return 0;
+    if (strcmp(path, "-") == 0) {
+        *out = stdout;
+        return 0;
+    }
+    if (temp_file_open(file, path, err, err_size) != 0)
+        return -1;
+    if (!(*out = temp_file_stream(file))) {
+        temp_file_abort(file);
+        snprintf(err, err_size, "%s: out of memory", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* Renders every scene in order; stops at the first failure. */
+static int render_all(const render_args *a, scene *scenes, char *const *wavs, char *const *pngs)
+{
+    char err[512];
+    temp_file manifest_file;
+    FILE *manifest;
+    if (render_output_make_directory("-o", a->out, err, sizeof err) != 0 ||
+        (a->png && render_output_make_directory("--png", a->png, err, sizeof err) != 0) ||
+        open_manifest(a->manifest, &manifest_file, &manifest, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        for (size_t i = 0; i < a->scene_count; i++)
+            scene_deinit(&scenes[i]);
+        return CLI_RUNTIME;
+    }
+    progress line;
+    progress_begin(&line, !a->quiet && isatty(fileno(stderr)) ? stderr : NULL, "s of sound",
+                   monotonic_now_ns());
+    int rc = CLI_OK;
+    size_t i = 0;
+    for (; i < a->scene_count && rc == CLI_OK; i++)
+        rc = render_one(a, i, &scenes[i], wavs, pngs, manifest, &line);
+    progress_clear(&line);
+    for (; i < a->scene_count; i++)
+        scene_deinit(&scenes[i]);
+    if (manifest && manifest != stdout) {
+        if (rc != CLI_OK) {
+            temp_file_abort(&manifest_file);
+        } else if (temp_file_commit(&manifest_file, err, sizeof err) != 0) {
+            fprintf(stderr, "fulgur: %s\n", err);
+            rc = CLI_RUNTIME;
+        }
+    }
+    return rc;
+}
+
+static int parse_args(int argc, char **argv, render_args *a)
+{
+    const option table[] = {
+        {"-o", OPTION_TEXT, &a->out, "OUT", .required = true,
+         .help = "the WAV to write; for several scenes a directory or a\n"
+                 "pattern with {name} and {index}"},
+        {"--set", OPTION_PARSED, &a->sets, "KEY=VALUE", .parse = add_set,
+         .help = "set a value in every scene before it is checked; KEY a\n"
+                 "JSON path (discharges[0].offset[1]), VALUE JSON or a\n"
+                 "string; repeatable, applied in order"},
+        {"--manifest", OPTION_TEXT, &a->manifest, "FILE",
+         .help = "a JSON line per file written: scene, seed, duration, peak,\n"
+                 "calibration (- : stdout, the summary lines then to stderr)"},
+        {"--quiet", OPTION_FLAG, &a->quiet, .help = "no summary line and no progress line"},
+        {"--png", OPTION_TEXT, &a->png, "OUT.png",
+         .help = "also draw the discharges (docs/picture.md) from the scene's\n"
+                 "\"camera\" into a PNG (needs gpu/: FULGUR_GPU); named as -o"},
+        {"--png-time", OPTION_NUMBER, &a->png_time, "SECONDS",
+         .help = "the picture's time (default: the first return stroke)",
+         .range = {.lo = -INFINITY, .hi = INFINITY}},
+        {"--size", OPTION_PARSED, &a->png_size, "WxH",
+         .help = "the picture in pixels (default 1280x720)", .parse = option_parse_size},
+        {0},
+    };
+    const command_line cl = {"fulgur render", "SCENE.json...", 1, (size_t)argc, about, notes,
+                             table};
+    options_result parsed = options_parse(&cl, argc, argv, a->scenes, &a->scene_count);
+    if (parsed == OPTIONS_OK && (!isnan(a->png_time) || a->png_size.width) && !a->png)
+        parsed = options_fail(&cl, "%s needs --png", a->png_size.width ? "--size" : "--png-time");
+#ifndef FULGUR_HAVE_GPU
+    if (parsed == OPTIONS_OK && a->png)
+        parsed = options_fail(&cl, "--png needs the picture, and this fulgur was built without "
+                                   "gpu/ (configure with -DFULGUR_GPU=ON, libepoxy, EGL, libpng)");
+#endif
+    if (parsed != OPTIONS_OK)
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
+    return -1;
 }
 
 int render_main(int argc, char **argv)
 {
-    const char *scene_path = NULL, *out_path = NULL, *png_path = NULL;
-    double png_time = NAN; /* NAN: not given (the parser takes finite numbers only) */
-    option_size png_size = {0, 0}; /* 0: not given */
-    const option table[] = {
-        {"-o", OPTION_TEXT, &out_path, "OUT.wav", .help = "the WAV to write", .required = true},
-        {"--png", OPTION_TEXT, &png_path, "OUT.png",
-         .help = "also draw the discharges (docs/picture.md) from the scene's\n"
-                 "\"camera\" into a PNG (needs gpu/: FULGUR_GPU)"},
-        {"--png-time", OPTION_NUMBER, &png_time, "SECONDS",
-         .help = "the picture's time (default: the first return stroke)",
-         .range = {.lo = -INFINITY, .hi = INFINITY}},
-        {"--size", OPTION_PARSED, &png_size, "WxH",
-         .help = "the picture in pixels (default 1280x720)", .parse = option_parse_size},
-        {0},
-    };
-    const command_line cl = {"fulgur render", "SCENE.json", 1, 1, about, notes, table};
-    size_t operands;
-    options_result parsed = options_parse(&cl, argc, argv, &scene_path, &operands);
-    if (parsed == OPTIONS_OK && (!isnan(png_time) || png_size.width) && !png_path)
-        parsed = options_fail(&cl, "%s needs --png", png_size.width ? "--size" : "--png-time");
-    if (parsed != OPTIONS_OK)
-        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
-#ifndef FULGUR_HAVE_GPU
-    if (png_path) {
-        options_fail(&cl, "--png needs the picture, and this fulgur was built without gpu/ "
-                          "(configure with -DFULGUR_GPU=ON, libepoxy, EGL, libpng)");
-        return CLI_USAGE;
+    render_args a = {.png_time = NAN}; /* NAN: not given (the parser takes finite numbers only) */
+    a.scenes = calloc((size_t)argc, sizeof *a.scenes);
+    scene *scenes = calloc((size_t)argc, sizeof *scenes);
+    char **wavs = calloc((size_t)argc, sizeof *wavs), **pngs = calloc((size_t)argc, sizeof *pngs);
+    if (!a.scenes || !scenes || !wavs || !pngs) {
+        fprintf(stderr, "fulgur: out of memory\n");
+        free(a.scenes), free(scenes), free(wavs), free(pngs);
+        return CLI_RUNTIME;
     }
-#endif
     char err[512];
-    scene s;
-    if (scene_load(scene_path, &s, err, sizeof err) != 0) {
-        fprintf(stderr, "fulgur: %s\n", err);
-        return CLI_USAGE;
+    int rc = parse_args(argc, argv, &a);
+    if (rc < 0 &&
+        (render_output_paths("-o", a.out, a.scenes, a.scene_count, ".wav", wavs, err,
+                             sizeof err) != 0 ||
+         (a.png && render_output_paths("--png", a.png, a.scenes, a.scene_count, ".png", pngs,
+                                       err, sizeof err) != 0))) {
+        fprintf(stderr, "fulgur render: %s\n", err);
+        rc = CLI_USAGE;
     }
-    if (scene_build(&s, err, sizeof err) != 0) {
-        fprintf(stderr, "fulgur: %s\n", err);
-        scene_deinit(&s);
-        return CLI_USAGE;
-    }
-    int rc = render_file(&s, out_path);
-#ifdef FULGUR_HAVE_GPU
-    if (rc == CLI_OK && png_path &&
-        render_picture(&s, png_path, png_time, png_size.width ? png_size.width : 1280,
-                       png_size.width ? png_size.height : 720, err, sizeof err) != 0) {
-        fprintf(stderr, "fulgur: %s\n", err);
-        rc = CLI_RUNTIME;
-    }
-#endif
-    scene_deinit(&s);
+    if (rc < 0)
+        rc = load_scenes(&a, scenes) == 0 ? render_all(&a, scenes, wavs, a.png ? pngs : NULL)
+                                          : CLI_USAGE;
+    render_output_free(wavs, a.scene_count);
+    render_output_free(pngs, a.scene_count);
+    free(a.scenes), free(scenes), free(wavs), free(pngs);
     return rc;
 }

@@ -1,4 +1,5 @@
 /* Interleaving and the WAV writer's settings. */
+#include <math.h>
 #include <stdio.h>
 
 #include "audio_file.h"
@@ -9,6 +10,14 @@ void audio_interleave(float *const *planes, uint32_t channels, uint32_t frames, 
     for (uint32_t f = 0; f < frames; f++)
         for (uint32_t ch = 0; ch < channels; ch++)
             out[(size_t)f * channels + ch] = planes[ch][f] * gain;
+}
+
+float audio_peak(const float *samples, size_t count, float peak)
+{
+    for (size_t i = 0; i < count; i++)
+        if (fabsf(samples[i]) > peak)
+            peak = fabsf(samples[i]);
+    return peak;
 }
 
 SNDFILE *audio_wav_open(int fd, const char *path, double rate_hz, uint32_t channels, char *err,

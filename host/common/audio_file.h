@@ -12,6 +12,9 @@
 void audio_interleave(float *const *planes, uint32_t channels, uint32_t frames, float gain,
                       float *out);
 
+/* The larger of peak and the largest |samples[i]|, i < count. */
+float audio_peak(const float *samples, size_t count, float peak);
+
 /* Opens fd (not closed by sf_close) for 32-bit float WAV; no PEAK chunk, so
  * equal samples give equal bytes. Returns NULL with a message naming
  * path in err. */

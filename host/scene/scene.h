@@ -77,6 +77,19 @@ int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err
  * the file. */
 int scene_load(const char *path, scene *out, char *err, size_t err_size);
 
+/* Reads the whole file at path into *text (malloc'ed, the caller frees;
+ * not NUL-terminated) and *size. Returns 0, or -1 with a message naming
+ * the file. */
+int scene_read_file(const char *path, char **text, size_t *size, char *err, size_t err_size);
+
+/* As scene_parse and scene_load, with each of sets[0..set_count)
+ * ("KEY=VALUE", scene/scene_override.h) set in the document, in order,
+ * before it is checked. */
+int scene_parse_with(const char *text, size_t size, const char *const *sets, size_t set_count,
+                     scene *out, char *err, size_t err_size);
+int scene_load_with(const char *path, const char *const *sets, size_t set_count, scene *out,
+                    char *err, size_t err_size);
+
 /* Runs the generators, once per parsed scene: every discharge gets its tree.
  * Returns 0, or -1 with a message naming the generator's path; the scene is
  * then as parsed. */

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "scene_internal.h"
+#include "scene_override.h"
 #include "fg_array.h"
 
 static const char *const top_keys[] = {
@@ -118,7 +119,8 @@ static int check_duration(const scene *s, char *err, size_t err_size)
     return 0;
 }
 
-int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err_size)
+int scene_parse_with(const char *text, size_t size, const char *const *sets, size_t set_count,
+                     scene *out, char *err, size_t err_size)
 {
     memset(out, 0, sizeof *out);
     const char *end = NULL;
@@ -128,17 +130,25 @@ int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err
     while (end < text + size && *end && strchr(" \t\r\n", *end))
         end++;
     int rc = -1;
-    if (end < text + size)
+    if (end < text + size) {
         syntax_error(text, end, "unexpected text after the JSON document", err, err_size);
-    else if (json_check_keys(json, "", top_keys, err, err_size) == 0 &&
-             parse_settings(json, out, err, err_size) == 0 &&
-             scene_parse_listener(cJSON_GetObjectItemCaseSensitive(json, "listener"), out, err,
-                                  err_size) == 0 &&
-             parse_discharges(json, out, err, err_size) == 0 &&
-             scene_parse_random(json, out, err, err_size) == 0 &&
-             scene_parse_camera(cJSON_GetObjectItemCaseSensitive(json, "camera"), out, err,
-                                err_size) == 0 &&
-             check_duration(out, err, err_size) == 0)
+        cJSON_Delete(json);
+        return -1;
+    }
+    for (size_t i = 0; i < set_count; i++)
+        if (scene_override(json, sets[i], err, err_size) != 0) {
+            cJSON_Delete(json);
+            return -1;
+        }
+    if (json_check_keys(json, "", top_keys, err, err_size) == 0 &&
+        parse_settings(json, out, err, err_size) == 0 &&
+        scene_parse_listener(cJSON_GetObjectItemCaseSensitive(json, "listener"), out, err,
+                             err_size) == 0 &&
+        parse_discharges(json, out, err, err_size) == 0 &&
+        scene_parse_random(json, out, err, err_size) == 0 &&
+        scene_parse_camera(cJSON_GetObjectItemCaseSensitive(json, "camera"), out, err,
+                           err_size) == 0 &&
+        check_duration(out, err, err_size) == 0)
         rc = 0;
     out->json = json;
     if (rc != 0)
@@ -146,37 +156,62 @@ int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err
     return rc;
 }
 
-int scene_load(const char *path, scene *out, char *err, size_t err_size)
+int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err_size)
 {
-    memset(out, 0, sizeof *out);
+    return scene_parse_with(text, size, NULL, 0, out, err, err_size);
+}
+
+int scene_read_file(const char *path, char **text, size_t *size, char *err, size_t err_size)
+{
+    *text = NULL;
+    *size = 0;
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, err_size, "%s: cannot open: %s", path, strerror(errno));
         return -1;
     }
-    char *text = NULL;
-    size_t size = 0, cap = 0;
+    char *buf = NULL;
+    size_t n = 0, cap = 0;
     for (;;) {
-        if (size == cap) {
-            char *grown = fg_array_grow(text, &cap, size + 1, 1, 65536);
+        if (n == cap) {
+            char *grown = fg_array_grow(buf, &cap, n + 1, 1, 65536);
             if (!grown)
                 break;
-            text = grown;
+            buf = grown;
         }
-        size_t got = fread(text + size, 1, cap - size, f);
-        size += got;
+        size_t got = fread(buf + n, 1, cap - n, f);
+        n += got;
         if (got == 0)
             break;
     }
-    int failed = ferror(f) || size == cap;
+    int failed = ferror(f) || n == cap;
     fclose(f);
-    int rc = -1;
-    if (failed)
+    if (failed) {
+        free(buf);
         snprintf(err, err_size, "%s: cannot read the file", path);
-    else
-        rc = scene_parse(text, size, out, err, err_size);
+        return -1;
+    }
+    *text = buf;
+    *size = n;
+    return 0;
+}
+
+int scene_load_with(const char *path, const char *const *sets, size_t set_count, scene *out,
+                    char *err, size_t err_size)
+{
+    memset(out, 0, sizeof *out);
+    char *text;
+    size_t size;
+    if (scene_read_file(path, &text, &size, err, err_size) != 0)
+        return -1;
+    int rc = scene_parse_with(text, size, sets, set_count, out, err, err_size);
     free(text);
     return rc;
+}
+
+int scene_load(const char *path, scene *out, char *err, size_t err_size)
+{
+    return scene_load_with(path, NULL, 0, out, err, err_size);
 }
 
 void scene_deinit(scene *s)

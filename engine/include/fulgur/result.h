@@ -20,7 +20,9 @@ typedef enum fg_result {
     FG_ERR_UNREACHABLE = -12,  /* a growth target cannot be reached */
     FG_ERR_NOT_CONVERGED = -13,/* an iterative solve stopped short of its tolerance */
     FG_ERR_UNSUPPORTED = -14,  /* not available here: a backend not built or not usable, GL too old */
-    FG_ERR_GPU = -15           /* the GPU driver failed: a shader did not compile, a GL error */
+    FG_ERR_GPU = -15,          /* the GPU driver failed: a shader did not compile, a GL error */
+    FG_ERR_IO = -16            /* a file could not be read or written (libfulgur-scene; the
+                                * engine itself does no I/O) */
 } fg_result;
 
 /* A short English description of r, e.g. "tree is invalid". Never NULL; the

@@ -19,6 +19,7 @@ const char *fg_result_str(fg_result r)
     case FG_ERR_NOT_CONVERGED: return "solver did not converge";
     case FG_ERR_UNSUPPORTED: return "not supported here";
     case FG_ERR_GPU: return "the GPU driver failed";
+    case FG_ERR_IO: return "a file could not be read or written";
     }
     return "unknown result code";
 }

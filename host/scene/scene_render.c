@@ -1,0 +1,122 @@
+/* The block loop shared by fulgur render and libfulgur-scene. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "scene_render.h"
+
+typedef struct render_job {
+    const scene *s;
+    fg_engine *engine;
+    size_t *order;          /* the discharge indices by emit time, then index */
+    size_t next;            /* the next of order to post */
+    float *planes[2];
+    size_t segments;
+} render_job;
+
+static fg_result create_engine(render_job *job, char *err, size_t err_size)
+{
+    const scene *s = job->s;
+    size_t events = 0; /* a ground image holds each segment twice (fg_engine_post) */
+    for (size_t i = 0; i < s->discharge_count; i++) {
+        const fg_discharge *d = &s->discharges[i].post;
+        job->segments += d->node_count - 1;
+        events += (d->node_count - 1) * (d->propagation.ground_reflection > 0 ? 2 : 1);
+    }
+    fg_engine_config cfg;
+    scene_engine_config(s, &cfg);
+    cfg.max_voices = (uint32_t)s->discharge_count;
+    cfg.segment_capacity = events > UINT32_MAX ? UINT32_MAX : (uint32_t)events;
+    fg_result r = fg_engine_create(&cfg, &job->engine);
+    if (r != FG_OK) {
+        snprintf(err, err_size, "engine for %zu discharges and %zu segments: %s",
+                 s->discharge_count, job->segments, fg_result_str(r));
+        return r;
+    }
+    job->order = scene_post_order(s);
+    for (uint32_t ch = 0; ch < s->channels; ch++)
+        job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float));
+    if (!job->order || !job->planes[0] || (s->channels == 2 && !job->planes[1])) {
+        snprintf(err, err_size, "out of memory");
+        return FG_ERR_NO_MEMORY;
+    }
+    return FG_OK;
+}
+
+/* Posts every discharge whose emit time falls before horizon_s. */
+static fg_result post_due(render_job *job, double horizon_s, char *err, size_t err_size)
+{
+    for (; job->next < job->s->discharge_count; job->next++) {
+        size_t i = job->order[job->next];
+        const scene_discharge *d = &job->s->discharges[i];
+        if (d->post.emit_time_s >= horizon_s)
+            break;
+        fg_result r = fg_engine_post(job->engine, &d->post, NULL);
+        if (r != FG_OK) {
+            snprintf(err, err_size, "discharges[%zu]: the engine refused it: %s", i,
+                     fg_result_str(r));
+            return r;
+        }
+    }
+    return FG_OK;
+}
+
+static fg_result run(render_job *job, const scene_render_sink *sink, scene_render_report *report,
+               char *err, size_t err_size)
+{
+    const scene *s = job->s;
+    double rate = s->sample_rate_hz;
+    uint64_t limit = (uint64_t)llround((s->duration_s > 0 ? s->duration_s : SCENE_MAX_DURATION_S) *
+                                       rate);
+    while (report->frames < limit) {
+        uint64_t frame = report->frames;
+        double t = (double)frame / rate;
+        fg_listener pose;
+        scene_listener_at(s, t, &pose);
+        fg_result r = fg_engine_set_listener(job->engine, &pose);
+        if (r != FG_OK) {
+            snprintf(err, err_size, "listener at %.6f s: %s (forward and up interpolate to "
+                                    "parallel directions?)", t, fg_result_str(r));
+            return r;
+        }
+        uint32_t n = limit - frame < s->block_frames ? (uint32_t)(limit - frame) : s->block_frames;
+        if ((r = post_due(job, t + n / rate + SCENE_POST_LEAD_S, err, err_size)) != FG_OK)
+            return r;
+        r = fg_engine_render(job->engine, job->planes, n);
+        if (r != FG_OK) {
+            snprintf(err, err_size, "render at %.6f s: %s", t, fg_result_str(r));
+            return r;
+        }
+        if ((r = sink->block(sink->context, job->planes, n, err, err_size)) != FG_OK)
+            return r;
+        fg_engine_collect(job->engine);
+        report->frames += n;
+        fg_engine_get_report(job->engine, &report->engine);
+        if (s->duration_s == 0 && job->next == s->discharge_count &&
+            report->engine.finished == s->discharge_count)
+            return FG_OK;
+    }
+    report->capped = s->duration_s == 0;
+    return FG_OK;
+}
+
+fg_result scene_render(const scene *s, const scene_render_sink *sink,
+                       scene_render_report *report, char *err, size_t err_size)
+{
+    scene_render_report local;
+    if (!report)
+        report = &local;
+    *report = (scene_render_report){0};
+    render_job job = {.s = s};
+    fg_result rc = create_engine(&job, err, err_size);
+    if (rc == FG_OK)
+        rc = run(&job, sink, report, err, err_size);
+    report->segments = job.segments;
+    if (job.engine)
+        fg_engine_get_report(job.engine, &report->engine);
+    fg_engine_destroy(job.engine);
+    free(job.order);
+    free(job.planes[0]);
+    free(job.planes[1]);
+    return rc;
+}

@@ -1,0 +1,51 @@
+/* The one render loop: a built scene through a fresh real-time engine,
+ * block by block, exactly as a device callback would drive it. fulgur
+ * render (a WAV) and libfulgur-scene (the Python package's samples) both
+ * render through it, so equal scenes give equal samples in both.
+ *
+ * Each block: the listener's pose at the block's start time, the
+ * discharges due before the block's end plus SCENE_POST_LEAD_S posted in
+ * time order (so that the engine prepares them off the audio path, as a
+ * simulation thread would), fg_engine_render, the block handed to the sink,
+ * fg_engine_collect. A scene without a duration ends with the block in which
+ * the last discharge fell silent, or at SCENE_MAX_DURATION_S. */
+#ifndef HOST_SCENE_SCENE_RENDER_H
+#define HOST_SCENE_SCENE_RENDER_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "scene.h"
+
+/* Discharges are posted this long before their emit time. */
+#define SCENE_POST_LEAD_S 0.5
+
+/* Where the blocks go. */
+typedef struct scene_render_sink {
+    /* Takes frames of each of the scene's channels, planes[ch][0..frames),
+     * in pascals (the scene's gain is the sink's to apply). Returns FG_OK to
+     * go on, or the reason to stop the render (FG_ERR_IO, FG_ERR_NO_MEMORY)
+     * with a message in err. */
+    fg_result (*block)(void *context, float *const *planes, uint32_t frames, char *err,
+                       size_t err_size);
+    void *context;
+} scene_render_sink;
+
+typedef struct scene_render_report {
+    uint64_t frames;           /* rendered and handed to the sink */
+    size_t segments;           /* of every discharge's tree */
+    bool capped;               /* no duration, and still sounding at SCENE_MAX_DURATION_S */
+    fg_engine_report engine;   /* the engine's counters at the end */
+} scene_render_report;
+
+/* Renders s, which scene_build has built, into sink; *report (may be NULL)
+ * receives what was rendered, also on an error. Returns FG_OK, or with a
+ * message in err: the engine's code when it could not be made for the
+ * scene or refused a discharge or a listener pose ("discharges[3]: the
+ * engine refused it: ..."); FG_ERR_NO_MEMORY; the sink's code when it
+ * stopped. [main-thread] */
+fg_result scene_render(const scene *s, const scene_render_sink *sink,
+                       scene_render_report *report, char *err, size_t err_size);
+
+#endif
