@@ -19,6 +19,14 @@
 /* Discharges are posted this long before their emit time, so the engine
  * prepares them off the audio path, as a simulation thread would. */
 #define POST_LEAD_S 0.5
+/* The listener's path is published as a 100 Hz frame loop would publish
+ * it, each pose with its time and velocity, this far ahead of the audio:
+ * every wave a block plays then arrives between two known poses, at the
+ * same poses whatever the block size. Blocks so long that more poses than
+ * the engine takes at once would fall in one get sparser poses. */
+#define POSE_HZ 100.0
+#define POSE_LEAD_S 0.2
+#define POSES_PER_BLOCK_MAX 48
 
 static const char about[] =
     "Renders the scene (docs/scene-format.md) through fg_engine_render in blocks of the\n"
@@ -36,6 +44,8 @@ typedef struct render_job {
     float *interleaved;
     SNDFILE *wav;
     size_t segments;
+    double pose_period_s;   /* between published poses */
+    uint64_t next_pose;     /* the next pose to publish, in periods from 0 */
 } render_job;
 
 static int create_engine(render_job *job, char *err, size_t err_size)
@@ -43,6 +53,8 @@ static int create_engine(render_job *job, char *err, size_t err_size)
     const scene *s = job->s;
     for (size_t i = 0; i < s->discharge_count; i++)
         job->segments += s->discharges[i].post.node_count - 1;
+    double block_s = s->block_frames / s->sample_rate_hz;
+    job->pose_period_s = fmax(1.0 / POSE_HZ, (block_s + POSE_LEAD_S) / POSES_PER_BLOCK_MAX);
     fg_engine_config cfg;
     scene_engine_config(s, &cfg);
     cfg.max_voices = (uint32_t)s->discharge_count;
@@ -83,6 +95,23 @@ static int post_due(render_job *job, double horizon_s, char *err, size_t err_siz
     return 0;
 }
 
+/* Publishes the listener's poses up to horizon_s. */
+static int publish_poses(render_job *job, double horizon_s, char *err, size_t err_size)
+{
+    for (double t; (t = (double)job->next_pose * job->pose_period_s) <= horizon_s; job->next_pose++) {
+        fg_listener pose;
+        scene_listener_at(job->s, t, &pose);
+        pose.time_s = t;
+        fg_result r = fg_engine_set_listener(job->engine, &pose);
+        if (r != FG_OK) {
+            snprintf(err, err_size, "listener at %.6f s: %s (forward and up interpolate to "
+                                    "parallel directions?)", t, fg_result_str(r));
+            return -1;
+        }
+    }
+    return 0;
+}
+
 static int write_block(render_job *job, uint32_t frames, char *err, size_t err_size)
 {
     audio_interleave(job->planes, job->s->channels, frames, (float)job->s->gain, job->interleaved);
@@ -103,18 +132,11 @@ static int run(render_job *job, uint64_t *frames_out, char *err, size_t err_size
     uint64_t frame = 0;
     while (frame < limit) {
         double t = (double)frame / rate;
-        fg_listener pose;
-        scene_listener_at(s, t, &pose);
-        fg_result r = fg_engine_set_listener(job->engine, &pose);
-        if (r != FG_OK) {
-            snprintf(err, err_size, "listener at %.6f s: %s (forward and up interpolate to "
-                                    "parallel directions?)", t, fg_result_str(r));
-            return -1;
-        }
         uint32_t n = limit - frame < s->block_frames ? (uint32_t)(limit - frame) : s->block_frames;
-        if (post_due(job, t + n / rate + POST_LEAD_S, err, err_size) != 0)
+        if (publish_poses(job, t + n / rate + POSE_LEAD_S, err, err_size) != 0 ||
+            post_due(job, t + n / rate + POST_LEAD_S, err, err_size) != 0)
             return -1;
-        r = fg_engine_render(job->engine, job->planes, n);
+        fg_result r = fg_engine_render(job->engine, job->planes, n);
         if (r != FG_OK) {
             snprintf(err, err_size, "render at %.6f s: %s", t, fg_result_str(r));
             return -1;
