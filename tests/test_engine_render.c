@@ -76,6 +76,7 @@ static void add_segment(const scene *s, int i, const double e[3], double first, 
     double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     double sn = fabs(d[0] * (a->x - b->x) + d[1] * (a->y - b->y) + d[2] * (a->z - b->z)) / (len * r);
     fg_wm_shape w = fg_wm_shape_at(&s->sound, s->sound.t0_s, r, sn, len / 2, C, NULL);
+    w.b *= (len / 2) / s->sound.ref_half_len_m; /* the line integral */
     double emit = s->emit_s + 0.5 * (to_strike(s, i) + to_strike(s, s->nodes[i].parent)) /
                                   s->sound.return_stroke_speed_m_s;
     fg_wm_event ev = {w, (emit + r / C) * FS - first, FS * (len / 2) / C};

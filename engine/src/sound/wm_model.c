@@ -19,7 +19,10 @@ static void wm_wave(const fg_sound_config *p, const fg_event *ev, const fg_ear_p
      * the segment's axis */
     double s = r > 0 ? fabs(d[0] * ev->dir[0] + d[1] * ev->dir[1] + d[2] * ev->dir[2]) / r : 0;
     ear->wm = fg_wm_shape_at(p, ev->t0_s, r, s > 1.0 ? 1.0 : s, ev->half_len_m, path->c_m_s, NULL);
-    ear->wm.b *= path->gain;
+    /* the line integral: the segment's share of the line, in reference
+     * segments (fg_sound_config.ref_half_len_m) */
+    double share = p->ref_half_len_m > 0 ? ev->half_len_m / p->ref_half_len_m : 1.0;
+    ear->wm.b *= path->gain * share;
 }
 
 static double wm_start_s(const fg_event *ev, const fg_event_ear *ear, double c_m_s)
