@@ -105,7 +105,8 @@ static void seeded_identical(void **state)
 }
 
 /* Every segment is segment_m long except the few of the final approach;
- * the turns follow the half-normal law of the given mean. */
+ * the turns follow the half-normal law of the given mean, scaled from the
+ * 3 m step to segment_m by sqrt(segment_m / 3). */
 static void segment_and_turn_statistics(void **state)
 {
     (void)state;
@@ -138,10 +139,10 @@ static void segment_and_turn_statistics(void **state)
         }
         fg_tree_destroy(t);
     }
-    double mean = sum / turns, rms = sqrt(sum2 / turns);
+    double mean = sum / turns, rms = sqrt(sum2 / turns), m = 12.0 * sqrt(2.5 / 3.0);
     /* half-normal of mean m: rms = m sqrt(pi / 2); standard error ~0.1 deg */
-    assert_float_equal(mean / DEG, 12.0, 0.5);
-    assert_float_equal(rms / DEG, 12.0 * sqrt(FG_PI / 2), 0.6);
+    assert_float_equal(mean / DEG, m, 0.5);
+    assert_float_equal(rms / DEG, m * sqrt(FG_PI / 2), 0.6);
     /* tortuous, yet it follows the skeleton */
     assert_true(max_off > 5 && max_off < 150);
 }

@@ -86,7 +86,7 @@ static const struct {
      "discharges[0].time: required (emit time, seconds)"},
     {ONE_TREE("\"tme\":1"),
      "discharges[0].tme: unknown key (known: time, preset, T0, r0, ps0, sigma0, t0_jitter, "
-     "return_stroke_speed, strokes, continuous, seed, offset, propagation, model, tree, "
+     "return_stroke_speed, ref_half_len, strokes, continuous, seed, offset, propagation, model, tree, "
      "generator, description)"},
     {"{\"discharges\":[{\"time\":0,\"preset\":\"sprak\"," TREE "}]}",
      "discharges[0].preset: unknown preset \"sprak\" (spark_balls, plasma_ball, lightning)"},

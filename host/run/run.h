@@ -43,6 +43,9 @@
  * yaw (the frame thread's sway, run_frame.c). */
 #define RUN_SWAY_M 0.03
 #define RUN_SWAY_YAW_RAD 0.17
+/* The frame thread publishes each tick the head's pose this many ticks
+ * ahead (a VR runtime's predicted display time). */
+#define RUN_POSE_LEAD_TICKS 1
 
 typedef struct run_options {
     const char *scene_path;

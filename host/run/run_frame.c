@@ -1,8 +1,10 @@
 /* The frame thread: a VR application's 90 Hz loop, reduced to the head.
- * Each tick it sets the listener to the scene's pose path at the tick's
- * time; a scene with one fixed pose gets a small sway instead (a few
- * centimetres and degrees, seeded, a smooth function of time so lock-step
- * runs repeat exactly). */
+ * Each tick it publishes where the head will be one tick later, with its
+ * velocity and that time on the engine clock, as a VR runtime predicts the
+ * head for the frame's display time: the scene's pose path, or for a scene
+ * with one fixed pose a small sway (a few centimetres and degrees, seeded,
+ * a smooth function of time so lock-step runs repeat exactly). The engine
+ * joins the poses into a continuous path (fg_engine_set_listener). */
 #include <math.h>
 #include <string.h>
 
@@ -55,6 +57,7 @@ static void set_pose(run_ctx *run, const sway *w, double t)
     scene_listener_at(run->s, t, &pose);
     if (run->s->pose_count == 1)
         sway_apply(w, t, &pose);
+    pose.time_s = t;
     /* the scene parser rejects paths whose directions could go parallel */
     if (fg_engine_set_listener(run->engine, &pose) == FG_OK)
         run->frames_set++;
@@ -77,7 +80,9 @@ void *run_frame_thread(void *arg)
             while (!run_stopping(run) && run_tick_at(run, seen = fg_engine_frames(run->engine)) < tick)
                 run_wait_engine_past(run, seen);
         }
-        set_pose(run, &w, (double)tick * period_s);
+        if (tick == 0)
+            set_pose(run, &w, 0.0); /* where the path starts, before the first lead */
+        set_pose(run, &w, (double)(tick + RUN_POSE_LEAD_TICKS) * period_s);
         run_publish_tick(run, tick);
     }
     return NULL;

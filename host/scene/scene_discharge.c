@@ -9,7 +9,7 @@
 #include "fg_rng.h"
 
 static const char *const discharge_keys[] = {
-    "time", "preset", "T0", "r0", "ps0", "sigma0", "t0_jitter", "return_stroke_speed",
+    "time", "preset", "T0", "r0", "ps0", "sigma0", "t0_jitter", "return_stroke_speed", "ref_half_len",
     "strokes", "continuous", "seed", "offset", "propagation", "model", "tree", "generator",
     "description", NULL};
 static const char *const continuous_keys[] = {"min_interval", "max_interval", "duration", NULL};
@@ -50,7 +50,9 @@ static int parse_sound(const cJSON *obj, const char *base, fg_sound_config *p, c
            json_number(obj, base, "t0_jitter", (number_range){0, 1, .hi_open = true},
                        &p->t0_jitter, err, err_size) ||
            json_number(obj, base, "return_stroke_speed", (number_range){0, 3e8, .lo_open = true},
-                       &p->return_stroke_speed_m_s, err, err_size)
+                       &p->return_stroke_speed_m_s, err, err_size) ||
+           json_number(obj, base, "ref_half_len", (number_range){.lo = 0, .hi = 1000},
+                       &p->ref_half_len_m, err, err_size)
                ? -1
                : 0;
 }

@@ -5,6 +5,15 @@
 
 #include "scene_render.h"
 
+/* The listener's path is published as a 100 Hz frame loop would publish
+ * it, each pose with its time and velocity, this far ahead of the audio:
+ * every wave a block plays then arrives between two known poses, at the
+ * same poses whatever the block size. Blocks so long that more poses than
+ * the engine takes at once would fall in one get sparser poses. */
+#define POSE_HZ 100.0
+#define POSE_LEAD_S 0.2
+#define POSES_PER_BLOCK_MAX 48
+
 typedef struct render_job {
     const scene *s;
     fg_engine *engine;
@@ -12,6 +21,8 @@ typedef struct render_job {
     size_t next;            /* the next of order to post */
     float *planes[2];
     size_t segments;
+    double pose_period_s;   /* between published poses */
+    uint64_t next_pose;     /* the next pose to publish, in periods from 0 */
 } render_job;
 
 static fg_result create_engine(render_job *job, char *err, size_t err_size)
@@ -23,6 +34,8 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
         job->segments += d->node_count - 1;
         events += (d->node_count - 1) * (d->propagation.ground_reflection > 0 ? 2 : 1);
     }
+    double block_s = s->block_frames / s->sample_rate_hz;
+    job->pose_period_s = fmax(1.0 / POSE_HZ, (block_s + POSE_LEAD_S) / POSES_PER_BLOCK_MAX);
     fg_engine_config cfg;
     scene_engine_config(s, &cfg);
     cfg.max_voices = (uint32_t)s->discharge_count;
@@ -61,6 +74,24 @@ static fg_result post_due(render_job *job, double horizon_s, char *err, size_t e
     return FG_OK;
 }
 
+/* Publishes the listener's poses up to horizon_s. */
+static fg_result publish_poses(render_job *job, double horizon_s, char *err, size_t err_size)
+{
+    for (double t; (t = (double)job->next_pose * job->pose_period_s) <= horizon_s;
+         job->next_pose++) {
+        fg_listener pose;
+        scene_listener_at(job->s, t, &pose);
+        pose.time_s = t;
+        fg_result r = fg_engine_set_listener(job->engine, &pose);
+        if (r != FG_OK) {
+            snprintf(err, err_size, "listener at %.6f s: %s (forward and up interpolate to "
+                                    "parallel directions?)", t, fg_result_str(r));
+            return r;
+        }
+    }
+    return FG_OK;
+}
+
 static fg_result run(render_job *job, const scene_render_sink *sink, scene_render_report *report,
                char *err, size_t err_size)
 {
@@ -71,16 +102,10 @@ static fg_result run(render_job *job, const scene_render_sink *sink, scene_rende
     while (report->frames < limit) {
         uint64_t frame = report->frames;
         double t = (double)frame / rate;
-        fg_listener pose;
-        scene_listener_at(s, t, &pose);
-        fg_result r = fg_engine_set_listener(job->engine, &pose);
-        if (r != FG_OK) {
-            snprintf(err, err_size, "listener at %.6f s: %s (forward and up interpolate to "
-                                    "parallel directions?)", t, fg_result_str(r));
-            return r;
-        }
         uint32_t n = limit - frame < s->block_frames ? (uint32_t)(limit - frame) : s->block_frames;
-        if ((r = post_due(job, t + n / rate + SCENE_POST_LEAD_S, err, err_size)) != FG_OK)
+        fg_result r;
+        if ((r = publish_poses(job, t + n / rate + POSE_LEAD_S, err, err_size)) != FG_OK ||
+            (r = post_due(job, t + n / rate + SCENE_POST_LEAD_S, err, err_size)) != FG_OK)
             return r;
         r = fg_engine_render(job->engine, job->planes, n);
         if (r != FG_OK) {

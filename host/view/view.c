@@ -36,14 +36,28 @@ static void take_replies(view *v, fgg_picture *pic)
     }
 }
 
-/* One frame: events, the scene's timeline, answers, the picture at now_s.
- * Returns -1 on a GL error. */
+/* Publishes where the scene's listener is at t_s, with that time and its
+ * velocity (the parser refused paths whose directions could go parallel). */
+static void publish_listener(view *v, double t_s)
+{
+    fg_listener pose;
+    scene_listener_at(v->s, t_s, &pose);
+    pose.time_s = t_s;
+    fg_result r = fg_engine_set_listener(v->engine, &pose);
+    (void)r;
+}
+
+/* One frame: the listener, events, the scene's timeline, answers, the
+ * picture at now_s. Returns -1 on a GL error. */
 static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
                  const view_event *events, size_t count, size_t *next)
 {
     bool headless = v->opt.backend != FGG_BACKEND_WINDOW;
     double before = v->now_s;
     v->now_s = headless ? k / v->opt.fps : fg_engine_time_s(v->engine);
+    /* the head one frame ahead, at the end of the sound this frame lets
+     * play, as a VR runtime predicts it for the frame's display */
+    publish_listener(v, v->now_s + 1.0 / v->opt.fps);
     if (!headless && !view_window_poll(v, ctx))
         v->quit = true;
     for (; *next < count && events[*next].frame <= k; ++*next)
@@ -164,7 +178,7 @@ static int view_scene(view *v)
         goto done;
     }
     fg_listener pose;
-    scene_listener_at(v->s, 0, &pose);
+    scene_listener_at(v->s, 0, &pose); /* where the path starts, at time 0 */
     if (fg_engine_set_listener(v->engine, &pose) != FG_OK) { /* checked by the parser */
         snprintf(err, sizeof err, "the engine refused the scene's listener");
         goto done;

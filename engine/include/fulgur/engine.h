@@ -3,7 +3,8 @@
  *   sim thread                          audio thread (host's device)
  *   fg_engine_post(e, &discharge)  -->  fg_engine_render(e, out, nframes)
  *   fg_engine_collect(e)          <--   (finished voices)
- *   fg_engine_set_listener(e, &pose)    [any thread, latest value wins]
+ *   fg_engine_set_listener(e, &pose)    [any thread: timestamped poses,
+ *                                        the engine follows their path]
  *
  * The engine clock is the audio clock: frames rendered so far divided by the
  * sample rate. Output is pascals at the ear, one plane per channel.
@@ -70,11 +71,20 @@ typedef struct fg_discharge {
 /* Identifies a posted voice until it is collected. Never 0. */
 typedef uint64_t fg_voice_id;
 
+/* Where the listener's head is at one moment. A host publishes one per
+ * frame (fg_engine_set_listener); the engine joins them into a continuous
+ * path and hears every wave from where the ears are when it arrives. */
 typedef struct fg_listener {
     double position[3];  /* metres */
     double forward[3];   /* any length > 0 */
     double up[3];        /* any length > 0, not parallel to forward */
-    double velocity[3];  /* m/s; informational (geometry follows the pose each block) */
+    double velocity[3];  /* m/s at time_s. All zero while the position changes
+                          * from the previous pose means "not known": the
+                          * engine takes the chord from that pose */
+    double time_s;       /* the engine clock at which the head is here
+                          * (fg_engine_time_s); 0 = when the pose is
+                          * published. A VR host gives its predicted display
+                          * time, or the time of the frame's tracking sample */
 } fg_listener;
 
 typedef struct fg_engine_report {
@@ -159,29 +169,50 @@ FG_API size_t fg_engine_collect(fg_engine *engine);
  * overlapping the block, for each ear), and retires finished voices. With
  * the WM-wave model each sample is the exact average of the continuous
  * pressure over its sample interval.
- * Moving listener: geometry follows the pose read at the start of each
- * block. An event joins the block loop when its waveform could start before
- * the block's end given the listener's displacement d since the post: the
- * look-ahead is (d + ear_spacing/2)/c, capped at max_lookahead_s; events
- * brought forward by more than that are counted as late.
+ * Moving listener: each wave is heard from where the ears are when it
+ * arrives, on the path through the published poses (fg_engine_set_listener):
+ * its arrival solves t = emission + travel(ear(t)), its angle, distance and
+ * air are those at t, and it is stretched by the Doppler rate
+ * 1 / (1 - d travel/dt) there. The output therefore does not depend on the
+ * block size. A still listener (one pose at rest) is heard exactly as
+ * before, each wave's geometry computed once. An event joins the block loop
+ * when its waveform could start before the block's end given the
+ * listener's displacement d from where the voice was posted: the look-ahead
+ * is (d + ear_spacing)/c, capped at max_lookahead_s; events brought forward
+ * by more than that are counted as late.
  * [audio-thread] Wait-free; never allocates, locks or prints.
  * Errors: FG_ERR_NULL engine/out/a plane; FG_ERR_BLOCK_SIZE nframes >
  * max_block_frames (the planes are then filled with zeros if out is valid). */
 FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *out,
                                                uint32_t nframes);
 
-/* Publishes the listener pose; the audio thread reads the latest at each
- * block. The pose is copied. [any-thread] but not the audio thread: meant
- * for one writer (the frame thread). Overlapping calls from several threads
- * stay correct, but each waits while another is writing, so it is not
- * lock-free among writers. Render never waits: if a write is in progress it
- * keeps the previous pose for that block.
+/* Publishes where the listener's head is at pose->time_s (0: now, the
+ * engine clock at this call). The pose is copied. The audio thread takes
+ * every pose published since its last block (the newest 64 if more came)
+ * into the listener's path: between two poses the position follows the
+ * cubic through both positions with both velocities (a pose without one
+ * takes the chord from the pose before), the directions blend; after the
+ * newest pose the head goes on along its velocity for at most 0.1 s, then
+ * stays. A pose whose time is not after the previous one's replaces the
+ * path from its time on: the latest value wins. The engine keeps the last
+ * 128 poses, and those of the last second.
+ * For the path of a 90 Hz host to sound continuous, publish each frame's
+ * pose with its time and velocity, ideally for a time ahead of the audio
+ * (a VR runtime's predicted display time): then every wave a block plays
+ * arrives between two known poses. A host publishing "now" poses is
+ * extrapolated along its velocity between frames; a pose at rest
+ * republished unchanged costs nothing.
+ * [any-thread] but not the audio thread: meant for one writer (the frame
+ * thread). Overlapping calls from several threads stay correct, but each
+ * waits while another is writing, so it is not lock-free among writers.
+ * Render never waits: a pose being written as it reads is taken in the
+ * next block.
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT zero-length or
- * parallel forward/up. */
+ * parallel forward/up, negative time. */
 FG_API FG_NODISCARD fg_result fg_engine_set_listener(fg_engine *engine, const fg_listener *pose);
 
-/* Copies the latest published pose into *out; waits while a write is in
- * progress. [any-thread] but not the audio thread. */
+/* Copies the latest published pose into *out (time_s as stamped); waits
+ * while a write is in progress. [any-thread] but not the audio thread. */
 FG_API void fg_engine_get_listener(const fg_engine *engine, fg_listener *out);
 
 /* A snapshot of the counters. [any-thread] */

@@ -23,6 +23,11 @@
  *
  * Branches: every node of a channel of depth below branch_depth (the main
  * channel has depth 0) starts a branch with probability branch_probability.
+ * The turn law's mean and the branch probability are given for the 3 m
+ * step; at another segment_m they are scaled by sqrt(segment_m / 3) and
+ * segment_m / 3 (at most 1), so that a tree turns and branches as much per
+ * metre of channel, and sounds the same (the line integral,
+ * docs/sound-model.md), whatever its step.
  * A branch leaves its parent's direction turned by an angle uniform in
  * [20, 50] degrees at a uniform azimuth, keeps that heading with the same
  * turn law, and runs for a length drawn from an exponential law of mean
@@ -85,10 +90,13 @@ typedef struct fg_lightning_config {
     double strike_m[2];         /* random skeleton: x, y of the strike point (z = 0) */
     double height_m;            /* random skeleton: height of the root: 5000 */
     double segment_m;           /* walk step: 3 (2 l of the lightning preset) */
-    double turn_mean_deg;       /* mean direction change per segment: 16; < 90 */
+    double turn_mean_deg;       /* mean direction change per 3 m segment: 16; < 90;
+                                   times sqrt(segment_m / 3) at another step */
     double max_deviation_deg;   /* free wander from the heading: 45; < 180 */
     double lookahead_m;         /* main channel's heading target ahead on the skeleton: 60 */
-    double branch_probability;  /* per node: 0.0137; negative: no branches; <= 1 */
+    double branch_probability;  /* per node of a 3 m segment: 0.0137; times
+                                   segment_m / 3 (at most 1) at another step;
+                                   negative: no branches; <= 1 */
     double branch_length_m;     /* mean length of a first-order branch: 400 */
     uint32_t branch_depth;      /* deepest branch order: 2; at most 8 */
     const fg_thunder_feature *features; /* borrowed for the call; NULL if feature_count is 0 */

@@ -22,6 +22,12 @@ typedef struct fg_sound_config {
     double sigma0;        /* stretch parameter (0.524, Wright 1983) */
     double t0_jitter;     /* per-segment T0 fluctuation, relative: T0 * (1 + u), |u| <= jitter */
     double return_stroke_speed_m_s; /* speed the return stroke climbs the channel */
+    /* The line integral: a segment of half-length l radiates ps0 scaled by
+     * l / ref_half_len_m, so a line sounds the same however finely it is
+     * cut. The presets give their table 1 l (a segment there sounds as
+     * ps0 says). 0: every segment radiates ps0 whatever its length (the
+     * paper's literal form; a finer tree is louder). WM-wave model only. */
+    double ref_half_len_m;
 } fg_sound_config;
 
 typedef enum fg_preset {
@@ -52,7 +58,8 @@ FG_API const char *fg_preset_name(fg_preset preset);
 FG_API FG_NODISCARD fg_result fg_preset_from_name(const char *name, fg_preset *out);
 
 /* Checks every field: all finite; t0_s, r0_m, ps0_pa > 0; sigma0 >= 0;
- * 0 <= t0_jitter < 1; return_stroke_speed_m_s > 0. [any-thread]
+ * 0 <= t0_jitter < 1; return_stroke_speed_m_s > 0; ref_half_len_m >= 0.
+ * [any-thread]
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT. */
 FG_API FG_NODISCARD fg_result fg_sound_config_check(const fg_sound_config *config);
 

@@ -18,6 +18,16 @@ static double path_m(double chord_m, double radius_m)
     return 2.0 * radius_m * asin(chord_m / (2.0 * radius_m));
 }
 
+double fg_refraction_path_slope(double chord_m, double radius_m)
+{
+    if (straight(radius_m))
+        return 1.0;
+    if (chord_m >= 2.0 * radius_m)
+        return 0.0;
+    double x = chord_m / (2.0 * radius_m);
+    return 1.0 / sqrt(1.0 - x * x);
+}
+
 double fg_refraction_travel_s(const double src[3], const double ear[3], double radius_m,
                               double c_m_s)
 {

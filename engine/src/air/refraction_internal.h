@@ -23,6 +23,12 @@
 double fg_refraction_travel_s(const double src[3], const double ear[3], double radius_m,
                               double c_m_s);
 
+/* How fast the arc lengthens with the chord: d(arc)/d(chord) =
+ * 1 / sqrt(1 - (L / 2R)^2) (1 for straight rays; the half circle, beyond
+ * 2R, no longer lengthens). A moving ear's travel time changes by this
+ * times its speed along the chord, over c. */
+double fg_refraction_path_slope(double chord_m, double radius_m);
+
 /* Top of the shadow zone at horizontal distance horizontal_m, metres
  * (0 for straight rays). */
 double fg_shadow_height_m(double horizontal_m, double radius_m);

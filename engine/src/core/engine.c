@@ -136,8 +136,9 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
     }
     e->free_count = cfg.max_voices;
     fg_listener origin = {.forward = {0, 1, 0}, .up = {0, 0, 1}};
-    fg_listener_cell_init(&e->listener, &origin);
-    e->pose = origin;
+    fg_pose_queue_init(&e->listener, &origin);
+    fg_trajectory_init(&e->trajectory, &origin, 1);
+    e->poses_seen = 1;
     atomic_init(&e->frames, 0);
     *out = e;
     return FG_OK;
@@ -185,15 +186,17 @@ fg_result fg_engine_set_listener(fg_engine *e, const fg_listener *pose)
     fg_result r = fg_listener_check(pose);
     if (r != FG_OK)
         return r;
-    fg_listener_cell_write(&e->listener, pose);
+    fg_listener stamped = *pose;
+    if (stamped.time_s == 0)
+        stamped.time_s = fg_engine_time_s(e);
+    (void)fg_pose_queue_push(&e->listener, &stamped);
     return FG_OK;
 }
 
 void fg_engine_get_listener(const fg_engine *e, fg_listener *out)
 {
     FG_REQUIRE(e && out);
-    unsigned serial;
-    fg_listener_cell_read(&e->listener, out, &serial);
+    fg_pose_queue_latest(&e->listener, out);
 }
 
 void fg_engine_get_report(const fg_engine *e, fg_engine_report *out)

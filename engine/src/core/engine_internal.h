@@ -9,6 +9,7 @@
 
 #include "bus_internal.h"
 #include "listener_internal.h"
+#include "trajectory_internal.h"
 #include "source_internal.h"
 #include "voice_internal.h"
 #include "fg_ring.h"
@@ -35,7 +36,7 @@ struct fg_engine {
 
     fg_ring inbox;            /* sim -> audio: fg_voice * */
     fg_ring garbage;          /* audio -> sim: fg_voice * */
-    fg_listener_cell listener;
+    fg_pose_queue listener;   /* the frame thread's timestamped poses */
 
     /* filter buses: set up at create, band filters designed by the sim
      * thread before the first voice that needs them */
@@ -44,8 +45,8 @@ struct fg_engine {
     /* audio thread */
     fg_voice **active;
     uint32_t active_count;
-    fg_listener pose;         /* last pose read */
-    unsigned pose_serial;
+    fg_trajectory trajectory; /* the poses read so far */
+    uint64_t poses_seen;      /* the number of the newest */
 
     atomic_uint_least64_t frames;
     fg_counters counters;

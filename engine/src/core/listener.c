@@ -9,6 +9,7 @@ static void pack(const fg_listener *p, uint64_t w[FG_POSE_WORDS])
     const double *v[4] = {p->position, p->forward, p->up, p->velocity};
     for (int i = 0; i < 4; i++)
         memcpy(&w[3 * i], v[i], 3 * sizeof(double));
+    memcpy(&w[12], &p->time_s, sizeof(double));
 }
 
 static void unpack(const uint64_t w[FG_POSE_WORDS], fg_listener *p)
@@ -16,6 +17,7 @@ static void unpack(const uint64_t w[FG_POSE_WORDS], fg_listener *p)
     double *v[4] = {p->position, p->forward, p->up, p->velocity};
     for (int i = 0; i < 4; i++)
         memcpy(v[i], &w[3 * i], 3 * sizeof(double));
+    memcpy(&p->time_s, &w[12], sizeof(double));
 }
 
 void fg_listener_cell_init(fg_listener_cell *cell, const fg_listener *pose)
@@ -39,6 +41,8 @@ fg_result fg_listener_check(const fg_listener *p)
         if (!isfinite(d))
             return FG_ERR_NOT_FINITE;
     }
+    if (p->time_s < 0)
+        return FG_ERR_ARGUMENT;
     fg_vec3 forward = fg_v3_load(p->forward), up = fg_v3_load(p->up);
     double f = fg_v3_len(forward), u = fg_v3_len(up);
     if (f == 0 || u == 0)
@@ -90,18 +94,85 @@ void fg_listener_cell_read(const fg_listener_cell *cell, fg_listener *pose, unsi
         ;
 }
 
-void fg_listener_ears(const fg_listener *p, unsigned channels, double spacing_m, fg_ears *out)
+void fg_pose_queue_init(fg_pose_queue *q, const fg_listener *pose)
 {
-    out->count = channels;
-    fg_vec3 r = fg_v3_cross(fg_v3_load(p->forward), fg_v3_load(p->up));
-    double norm = fg_v3_len(r);
-    fg_v3_store(fg_v3(r.x / norm, r.y / norm, r.z / norm), out->right);
-    if (channels == 1) {
-        memcpy(out->pos[0], p->position, sizeof out->pos[0]);
-        return;
+    for (unsigned i = 0; i < FG_POSE_QUEUE; i++)
+        fg_listener_cell_init(&q->slot[i], pose);
+    /* pose number 1 sits in slot 0, written once */
+    atomic_init(&q->slot[0].seq, 2u);
+    atomic_init(&q->published, 1);
+    atomic_init(&q->writing, 0);
+}
+
+static bool at_rest(const fg_listener *p)
+{
+    return p->velocity[0] == 0.0 && p->velocity[1] == 0.0 && p->velocity[2] == 0.0;
+}
+
+/* The newest pose, as its writer (holding the turn) sees it. */
+static void newest(const fg_pose_queue *q, uint64_t n, fg_listener *pose)
+{
+    const fg_listener_cell *c = &q->slot[(n - 1) % FG_POSE_QUEUE];
+    uint64_t w[FG_POSE_WORDS];
+    for (int i = 0; i < FG_POSE_WORDS; i++)
+        w[i] = atomic_load_explicit(&((fg_listener_cell *)c)->words[i], memory_order_relaxed);
+    unpack(w, pose);
+}
+
+bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose)
+{
+    unsigned idle = 0;
+    while (!atomic_compare_exchange_weak_explicit(&q->writing, &idle, 1u, memory_order_acquire,
+                                                  memory_order_relaxed))
+        idle = 0;
+    uint64_t n = atomic_load_explicit(&q->published, memory_order_relaxed);
+    fg_listener last;
+    newest(q, n, &last);
+    bool same = at_rest(pose) && at_rest(&last) &&
+                memcmp(pose->position, last.position, sizeof pose->position) == 0 &&
+                memcmp(pose->forward, last.forward, sizeof pose->forward) == 0 &&
+                memcmp(pose->up, last.up, sizeof pose->up) == 0;
+    if (!same) {
+        fg_listener_cell_write(&q->slot[n % FG_POSE_QUEUE], pose);
+        atomic_store_explicit(&q->published, n + 1, memory_order_release);
     }
-    for (int k = 0; k < 3; k++) {
-        out->pos[0][k] = p->position[k] - 0.5 * spacing_m * out->right[k];
-        out->pos[1][k] = p->position[k] + 0.5 * spacing_m * out->right[k];
+    atomic_store_explicit(&q->writing, 0u, memory_order_release);
+    return !same;
+}
+
+/* Pose number n (from 1) lives in slot (n - 1) % FG_POSE_QUEUE, whose
+ * sequence word then reads twice the times it has been written. */
+static unsigned seq_of(uint64_t n)
+{
+    return 2u * (unsigned)((n - 1) / FG_POSE_QUEUE + 1);
+}
+
+uint64_t fg_pose_queue_latest(const fg_pose_queue *q, fg_listener *pose)
+{
+    for (;;) {
+        uint64_t n = atomic_load_explicit(&q->published, memory_order_acquire);
+        unsigned seq;
+        fg_listener_cell_read(&q->slot[(n - 1) % FG_POSE_QUEUE], pose, &seq);
+        if (seq == seq_of(n))
+            return n;
     }
+}
+
+void fg_pose_queue_drain(const fg_pose_queue *q, uint64_t *seen,
+                         void (*take)(const fg_listener *pose, uint64_t number, void *arg),
+                         void *arg)
+{
+    uint64_t n = atomic_load_explicit(&q->published, memory_order_acquire);
+    uint64_t from = *seen + 1;
+    if (n >= FG_POSE_QUEUE && from < n - FG_POSE_QUEUE + 1)
+        from = n - FG_POSE_QUEUE + 1;
+    for (uint64_t k = from; k <= n; k++) {
+        fg_listener pose;
+        unsigned seq;
+        if (fg_listener_cell_try_read(&q->slot[(k - 1) % FG_POSE_QUEUE], &pose, &seq) &&
+            seq == seq_of(k))
+            take(&pose, k, arg);
+    }
+    if (n > *seen)
+        *seen = n;
 }

@@ -30,9 +30,8 @@ fg_result fg_engine_post_source(fg_engine *e, const fg_source_ops *ops, const vo
     fg_voice *v = &e->voices[e->free_slots[e->free_count - 1]];
     void *state = k->pool + (size_t)v->slot * k->stride;
     fg_listener pose;
-    unsigned serial;
-    fg_listener_cell_read(&e->listener, &pose, &serial);
-    fg_post_context post = {&e->cfg, &pose, serial, &e->buses, k->storage};
+    uint64_t number = fg_pose_queue_latest(&e->listener, &pose);
+    fg_post_context post = {&e->cfg, &pose, 2 * number + 1, &e->buses, k->storage};
     fg_result r = ops->prepare(ops, state, desc, &post);
     if (r != FG_OK) {
         fg_count(&e->counters.dropped_posts, 1);

@@ -15,6 +15,11 @@ static double now_s(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+static void absorb(const fg_listener *pose, uint64_t number, void *trajectory)
+{
+    fg_trajectory_push(trajectory, pose, number);
+}
+
 fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
 {
     if (!e || !out)
@@ -33,17 +38,22 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
     fg_fp_env env = fg_fp_env_flush_denormals();
     uint64_t start = atomic_load_explicit(&e->frames, memory_order_relaxed);
 
-    fg_listener_cell_try_read(&e->listener, &e->pose, &e->pose_serial);
+    double start_s = (double)start / e->cfg.sample_rate_hz;
+    fg_pose_queue_drain(&e->listener, &e->poses_seen, absorb, &e->trajectory);
+    fg_trajectory_forget(&e->trajectory, start_s);
+    fg_head head;
+    fg_trajectory_head(&e->trajectory, start_s, &head);
     fg_ears ears;
-    fg_listener_ears(&e->pose, e->cfg.channels, e->cfg.ear_spacing_m, &ears);
+    fg_head_ears(&head, e->cfg.channels, e->cfg.ear_spacing_m, &ears);
     fg_bus_set_begin(&e->buses, nframes);
     fg_block_context block = {
         .cfg = &e->cfg,
         .start_frame = (double)start,
         .frames = nframes,
+        .trajectory = &e->trajectory,
         .ears = &ears,
-        .position = e->pose.position,
-        .serial = e->pose_serial,
+        .position = head.position,
+        .serial = fg_trajectory_serial(&e->trajectory),
         .buses = &e->buses,
         .counters = &e->counters,
     };

@@ -39,6 +39,7 @@
 
 #include "bus_internal.h"
 #include "listener_internal.h"
+#include "trajectory_internal.h"
 #include "fulgur/engine.h"
 
 /* What the audio thread reports, as atomic counters other threads read. */
@@ -56,8 +57,9 @@ static inline void fg_count(atomic_uint_least64_t *counter, uint64_t n)
 /* What a model's prepare may use besides its own state. [sim-thread] */
 typedef struct fg_post_context {
     const fg_engine_config *cfg;
-    const fg_listener *pose;    /* the listener pose at the post */
-    unsigned pose_serial;       /* its serial (fg_block_context.serial) */
+    const fg_listener *pose;    /* the newest listener pose at the post */
+    uint64_t pose_serial;       /* the serial of a trajectory resting at it
+                                 * (fg_block_context.serial) */
     fg_bus_set *buses;          /* the sim thread's part: fg_bus_set_design_bands */
     void *storage;              /* the kind's shared storage */
 } fg_post_context;
@@ -67,9 +69,13 @@ typedef struct fg_block_context {
     const fg_engine_config *cfg;
     double start_frame;         /* the engine clock at the block's first sample */
     uint32_t frames;
-    const fg_ears *ears;        /* at the listener pose read for this block */
-    const double *position;     /* the listener's centre */
-    unsigned serial;            /* changes when the pose does */
+    /* Where the ears are at any time (a model evaluating its geometry at
+     * the moment each wave arrives asks here), and for models content
+     * with one pose a block, the ears and centre at the block's start. */
+    const fg_trajectory *trajectory;
+    const fg_ears *ears;
+    const double *position;
+    uint64_t serial;            /* fg_trajectory_serial: changes when the trajectory does */
     fg_bus_set *buses;
     fg_counters *counters;      /* late events and samples, skipped repeats */
 } fg_block_context;

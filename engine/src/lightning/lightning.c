@@ -1,9 +1,11 @@
 /* Statistical lightning: the tortuous walk along a skeleton, its branches,
  * and the designer features' effect on the walk (rules in fulgur/lightning.h). */
+#include <math.h>
 #include <stdlib.h>
 
 #include "designer_internal.h"
 #include "fg_array.h"
+#include "fulgur/sound.h"
 
 #define BRANCH_ANGLE_MIN_DEG 20.0
 #define BRANCH_ANGLE_MAX_DEG 50.0
@@ -31,6 +33,8 @@ typedef struct walker {
     fg_rng rng;
     spawn *spawns;
     size_t nspawn, spawn_cap;
+    /* the turn law and the branching at segment_m (per_step) */
+    double turn_rad, branch_p;
 } walker;
 
 /* The direction after one step of the turn law (see fulgur/lightning.h). */
@@ -53,7 +57,7 @@ static fg_result add(walker *w, fg_vec3 q, size_t parent, uint32_t flags, uint32
         return FG_ERR_CAPACITY;
     fg_result r = fg_tree_add(w->tree, q.x, q.y, q.z, (int32_t)parent, flags, index);
     if (r != FG_OK || depth >= w->p->branch_depth || w->p->branch_probability < 0 ||
-        fg_rng_uniform(&w->rng) >= w->p->branch_probability)
+        fg_rng_uniform(&w->rng) >= w->branch_p)
         return r;
     spawn *s = fg_array_grow(w->spawns, &w->spawn_cap, w->nspawn + 1, sizeof *s, 256);
     if (!s)
@@ -121,7 +125,7 @@ static fg_result walk_main(walker *w)
         int b = feature_at(w, s);
         fg_thunder_kind f = b >= 0 ? p->features[b].kind : 0;
         double a = b >= 0 ? fg_thunder_amplitude(&p->features[b]) : 1;
-        double mean = p->turn_mean_deg * deg * (f == FG_THUNDER_ROAR ? 1 + ROAR_GAIN * a : 1);
+        double mean = w->turn_rad * (f == FG_THUNDER_ROAR ? 1 + ROAR_GAIN * a : 1);
         fg_vec3 heading = fg_v3_unit(fg_v3_sub(fg_skeleton_at(k, s + p->lookahead_m), pos));
         dir = turn(w, dir, heading, mean);
         fg_vec3 next = fg_v3_add(pos, fg_v3_scale(dir, step));
@@ -149,7 +153,7 @@ static fg_result grow_branch(walker *w, spawn sp)
     size_t steps = (size_t)ceil(length / p->segment_m), node = sp.node;
     fg_vec3 dir = heading;
     for (size_t i = 0; i < steps; i++) {
-        dir = turn(w, dir, heading, p->turn_mean_deg * deg);
+        dir = turn(w, dir, heading, w->turn_rad);
         fg_vec3 next = fg_v3_add(pos, fg_v3_scale(dir, p->segment_m));
         if (next.z <= 0)
             break;
@@ -223,7 +227,16 @@ fg_result fg_lightning_generate(const fg_lightning_config *config, fg_tree *out,
         return FG_ERR_NULL;
     if (fg_tree_count(out) != 0)
         return FG_ERR_ARGUMENT;
-    walker w = {.p = &p, .tree = out};
+    /* turn_mean_deg and branch_probability hold for the reference step
+     * (2 l of the lightning preset): a finer or coarser walk turns and
+     * branches as much per metre of channel, so its shape and length, and
+     * so its sound (the line integral), do not depend on segment_m */
+    fg_preset_scale scale;
+    if (fg_preset_get_scale(FG_PRESET_LIGHTNING, &scale) != FG_OK)
+        return FG_ERR_ARGUMENT;
+    double per_step = p.segment_m / (2.0 * scale.half_step_m);
+    walker w = {.p = &p, .tree = out, .turn_rad = p.turn_mean_deg * deg * sqrt(per_step),
+                .branch_p = fmin(1.0, p.branch_probability * per_step)};
     fg_rng_seed(&w.rng, p.seed);
     fg_skeleton base = {0}, shaped = {0};
     fg_stretch stretches[FG_THUNDER_MAX_FEATURES] = {{0}};

@@ -11,25 +11,29 @@ static size_t abe_stride(size_t segments)
     return (segments + MAX_SOURCES - 1) / MAX_SOURCES;
 }
 
-static void abe_wave(const fg_sound_config *p, fg_event *ev, const fg_ear_path *path, int k)
+static void abe_wave(const fg_sound_config *p, const fg_event *ev, const fg_ear_path *path,
+                     fg_event_ear *ear)
 {
     (void)p;
-    fg_abe_wave_init(&ev->abe[k], &fg_abe_defaults, ev->mid, path->ear, 0.0, path->c_m_s);
-    ev->abe[k].arrival_s = ev->center_s[k];
-    ev->abe[k].peak_pa *= path->gain;
+    fg_abe_wave_init(&ear->abe, &fg_abe_defaults, ev->mid, path->ear, 0.0, path->c_m_s);
+    ear->abe.arrival_s = ear->center_s;
+    ear->abe.rate = ear->rate;
+    ear->abe.peak_pa *= path->gain;
 }
 
-static double abe_start_s(const fg_event *ev, int k, double c_m_s)
+static double abe_start_s(const fg_event *ev, const fg_event_ear *ear, double c_m_s)
 {
+    (void)ev;
     (void)c_m_s;
-    return ev->abe[k].arrival_s;
+    return ear->abe.arrival_s;
 }
 
-static fg_wave_status abe_add(const fg_event *ev, const fg_event_play *play, long *first,
-                              long *last)
+static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
+                              const fg_event_play *play, long *first, long *last)
 {
+    (void)ev;
     const double fs = play->fs_hz;
-    fg_abe_wave w = ev->abe[play->ch];
+    fg_abe_wave w = ear->abe;
     w.arrival_s += play->offset_s + play->origin_frame / fs;
     int64_t a, b;
     fg_abe_wave_span(&w, fs, &a, &b);

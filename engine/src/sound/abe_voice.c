@@ -33,13 +33,14 @@ void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_config *p, const double src[3
     w->freq_decay_s = p->freq_decay_s;
     w->amp_decay_s = p->amp_decay_s;
     w->duration_s = p->amp_decay_s * SIXTY_DB;
+    w->rate = 1.0;
     w->harmonics = p->harmonics;
 }
 
 void fg_abe_wave_span(const fg_abe_wave *w, double fs_hz, int64_t *first, int64_t *last)
 {
     *first = (int64_t)ceil(w->arrival_s * fs_hz);
-    *last = (int64_t)floor((w->arrival_s + w->duration_s) * fs_hz);
+    *last = (int64_t)floor((w->arrival_s + w->duration_s * w->rate) * fs_hz);
 }
 
 /* The pressure t_s after arrival (0 <= t_s <= duration). */
@@ -75,5 +76,6 @@ void fg_abe_wave_render(const fg_abe_wave *w, double fs_hz, int64_t block_start,
     int64_t hi = block_start + (int64_t)n - 1;
     hi = last < hi ? last : hi;
     for (int64_t k = lo; k <= hi; k++)
-        out[k - block_start] += (float)pressure(w, (double)k / fs_hz - w->arrival_s, 0.5 * fs_hz);
+        out[k - block_start] +=
+            (float)pressure(w, ((double)k / fs_hz - w->arrival_s) / w->rate, 0.5 * fs_hz);
 }

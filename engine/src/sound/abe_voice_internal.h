@@ -65,6 +65,7 @@ typedef struct fg_abe_wave {
     double freq_decay_s;
     double amp_decay_s;
     double duration_s;
+    double rate;         /* Doppler: a moving ear hears the wave rate times as long; 1 */
     unsigned harmonics;
 } fg_abe_wave;
 

@@ -1,11 +1,19 @@
-/* Per-ear state of one event for the current pose: distance, travel time
- * (straight or refracted), shadow-zone fade, the filter bus and the
- * head-shadow share; the model's wave from them. */
+/* What one ear hears of one event: distance, travel time (straight or
+ * refracted), shadow-zone fade, the filter bus and the head-shadow share;
+ * the model's wave from them. For a still listener at the pose the voice
+ * caches; for a moving one at the moment the wave arrives on the
+ * listener's trajectory, with the Doppler rate there. */
 #include <math.h>
 
 #include "air/head_shadow_internal.h"
 #include "air/refraction_internal.h"
 #include "discharge_internal.h"
+
+/* Newton steps on the arrival time at most, and when to stop. */
+#define ARRIVAL_ITERATIONS 6
+#define ARRIVAL_TOLERANCE_S 1e-9
+/* 1 - d travel/dt at least: the listener well below the speed of sound */
+#define MIN_CLOSING 0.1
 
 static unsigned bus_of(const fg_bus_set *buses, const fg_propagation_config *p, double r)
 {
@@ -20,38 +28,96 @@ static unsigned bus_of(const fg_bus_set *buses, const fg_propagation_config *p, 
     return FG_BUS_DRY;
 }
 
-void fg_event_geometry(const fg_discharge_voice *v, fg_event *ev, const fg_ears *ears, int k,
-                       double c_m_s, const fg_bus_set *buses)
+/* The path from ev to an ear at `ear`; returns the travel time and sets
+ * *slope to d(path length)/d(distance). */
+static double path_to(const fg_discharge_voice *v, const fg_event *ev, const double *ear,
+                      double c, fg_ear_path *path, double *slope)
 {
-    const double *ear = ears->pos[k];
     const fg_propagation_config *pr = &v->propagation;
-    double c = c_m_s;
-    fg_ear_path path = {.ear = ear, .c_m_s = c};
-    double *d = path.d;
+    *path = (fg_ear_path){.ear = ear, .c_m_s = c};
+    double *d = path->d;
     d[0] = ear[0] - ev->mid[0];
     d[1] = ear[1] - ev->mid[1];
     d[2] = ear[2] - ev->mid[2];
     double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    path.r_m = r;
-
+    path->r_m = r;
     /* eqs. 3-4 clamp r to r0; the wave still travels the true distance */
     double travel = r / c, gain = ev->gain;
+    *slope = 1.0;
     if (pr->refraction_radius_m > 0) {
         travel = fg_refraction_travel_s(ev->mid, ear, pr->refraction_radius_m, c);
+        *slope = fg_refraction_path_slope(r, pr->refraction_radius_m);
         /* an image's fade is its source's: the height above ground */
         gain *= fg_shadow_gain(fabs(ev->mid[2]), hypot(d[0], d[1]), pr->refraction_radius_m);
     }
-    path.gain = gain;
-    ev->center_s[k] = ev->emit_s + travel;
-    v->model->wave(&v->sound, ev, &path, k);
-    ev->bus[k] = (uint8_t)bus_of(buses, pr, r);
-    ev->shadow[k] = 0.0f;
+    path->gain = gain;
+    return travel;
+}
+
+/* The ear's state from its path: the wave, the bus, the head shadow. */
+static void hear(const fg_discharge_voice *v, const fg_event *ev, const fg_ear_path *path,
+                 const fg_ears *ears, int k, const fg_bus_set *buses, fg_event_ear *out)
+{
+    const fg_propagation_config *pr = &v->propagation;
+    v->model->wave(&v->sound, ev, path, out);
+    out->bus = (uint8_t)bus_of(buses, pr, path->r_m);
+    out->shadow = 0.0f;
     if (pr->head_shadow && ears->count == 2) {
         double axis[3], to_source[3];
         for (int j = 0; j < 3; j++) {
             axis[j] = k == 0 ? -ears->right[j] : ears->right[j];
-            to_source[j] = -d[j];
+            to_source[j] = -path->d[j];
         }
-        ev->shadow[k] = (float)(fg_head_shadow_db(axis, to_source) / FG_HEAD_SHADOW_DB);
+        out->shadow = (float)(fg_head_shadow_db(axis, to_source) / FG_HEAD_SHADOW_DB);
     }
+}
+
+void fg_event_geometry(const fg_discharge_voice *v, fg_event *ev, const fg_ears *ears, int k,
+                       double c_m_s, const fg_bus_set *buses)
+{
+    fg_ear_path path;
+    double slope;
+    double travel = path_to(v, ev, ears->pos[k], c_m_s, &path, &slope);
+    fg_event_ear *out = &ev->ear[k];
+    out->center_s = ev->emit_s + travel;
+    out->rate = 1.0;
+    hear(v, ev, &path, ears, k, buses, out);
+}
+
+/* d travel / dt for an ear moving at vel along path. */
+static double travel_rate(const fg_ear_path *path, const double vel[3], double slope)
+{
+    if (path->r_m == 0.0)
+        return 0.0;
+    const double *d = path->d;
+    double closing = (d[0] * vel[0] + d[1] * vel[1] + d[2] * vel[2]) / path->r_m;
+    return slope * closing / path->c_m_s;
+}
+
+void fg_event_ear_at(const fg_discharge_voice *v, const fg_event *ev, const fg_trajectory *traj,
+                     const fg_engine_config *cfg, double emission_s, int k,
+                     const fg_bus_set *buses, fg_event_ear *out)
+{
+    const double c = cfg->speed_of_sound_m_s;
+    /* the arrival t solves t = emission + emit + travel(ear(t)); Newton
+     * from the arrival at the voice's cached pose */
+    double t = emission_s + ev->ear[k].center_s;
+    fg_head head;
+    fg_ears ears;
+    fg_ear_path path;
+    double travel = 0.0, slope = 1.0, dtravel = 0.0;
+    for (int it = 0; it < ARRIVAL_ITERATIONS; it++) {
+        fg_trajectory_head(traj, t, &head);
+        fg_head_ears(&head, cfg->channels, cfg->ear_spacing_m, &ears);
+        travel = path_to(v, ev, ears.pos[k], c, &path, &slope);
+        dtravel = travel_rate(&path, ears.vel[k], slope);
+        double closing = fmax(1.0 - dtravel, MIN_CLOSING);
+        double step = (t - emission_s - ev->emit_s - travel) / closing;
+        if (fabs(step) < ARRIVAL_TOLERANCE_S)
+            break;
+        t -= step;
+    }
+    out->center_s = ev->emit_s + travel;
+    out->rate = 1.0 / fmax(1.0 - dtravel, MIN_CLOSING);
+    hear(v, ev, &path, &ears, k, buses, out);
 }

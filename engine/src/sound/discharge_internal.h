@@ -31,6 +31,21 @@
  * discharge whose sound outlasts the interval. */
 #define FG_MAX_INSTANCES 64
 
+/* What one ear hears of one event, evaluated at the moment its wave
+ * arrives: at the post (or when a still listener moves to another place)
+ * for every instance, or afresh for each instance and block while the
+ * listener moves (fg_event_ear_at). */
+typedef struct fg_event_ear {
+    double center_s;      /* arrival of the wave's centre, seconds after the instance's emission */
+    double rate;          /* Doppler: the ear hears the wave rate times as long, 1 / (1 - d travel/dt) */
+    union {               /* the model's wave, written by its wave function */
+        fg_wm_shape wm;   /* the WM-wave (wm_model.c) */
+        fg_abe_wave abe;  /* Abe's wave, arrival relative to the emission (abe_model.c) */
+    };
+    float shadow;         /* head shadow: the share sent to the shadowed twin */
+    uint8_t bus;          /* the filter bus (bus_internal.h) */
+} fg_event_ear;
+
 /* One source point (a segment, or every stride-th for Abe's model),
  * prepared at post time. Times are seconds after the emission of the
  * instance that plays it. */
@@ -44,18 +59,11 @@ typedef struct fg_event {
     double start_s;       /* earliest waveform start, either ear, at the post pose */
     uint32_t segment;     /* index of the child node, for a stable order */
     bool main;            /* on the main channel */
-    /* per-ear state for the pose with this serial */
-    unsigned serial;
-    double center_s[2];   /* arrival at the ear: emission + travel */
-    union {               /* the model's wave, written by its wave function */
-        fg_wm_shape shape[2];  /* the WM-wave (wm_model.c) */
-        fg_abe_wave abe[2];    /* Abe's wave, arrival relative to the emission (abe_model.c) */
-    };
-    uint8_t bus[2];       /* the filter bus of each ear (bus_internal.h) */
-    float shadow[2];      /* head shadow: the share sent to the shadowed twin */
+    uint64_t serial;      /* the still listener ear[] was evaluated for */
+    fg_event_ear ear[2];
 } fg_event;
 
-/* An event as seen from one ear at the current pose. */
+/* An event as seen from one ear at the moment its wave arrives. */
 typedef struct fg_ear_path {
     const double *ear;    /* the ear's position */
     double d[3];          /* ear - midpoint */
@@ -83,12 +91,13 @@ typedef struct fg_event_play {
 typedef struct fg_discharge_model {
     /* Segments per source point, for a tree of this many segments. */
     size_t (*stride)(size_t segments);
-    /* Writes ear k's wave of ev for the ear path (the union above and its
-     * per-ear fields). [sim-thread at the post; audio-thread when the pose
-     * changes] */
-    void (*wave)(const fg_sound_config *sound, fg_event *ev, const fg_ear_path *path, int k);
-    /* When ear k's wave of ev starts sounding, seconds after the emission. */
-    double (*start_s)(const fg_event *ev, int k, double c_m_s);
+    /* Writes the wave of ev for an ear on this path into ear (its union;
+     * its center_s and rate are set). [sim-thread at the post;
+     * audio-thread when the listener moves] */
+    void (*wave)(const fg_sound_config *sound, const fg_event *ev, const fg_ear_path *path,
+                 fg_event_ear *ear);
+    /* When an ear's wave of ev starts sounding, seconds after the emission. */
+    double (*start_s)(const fg_event *ev, const fg_event_ear *ear, double c_m_s);
 } fg_discharge_model;
 
 typedef struct fg_instance {
@@ -163,9 +172,17 @@ fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void
 /* discharge_schedule.c: takes the voice up. [audio-thread] */
 void fg_discharge_adopt(void *voice, const fg_block_context *block);
 
-/* discharge_event.c: event ev of voice v as heard by ear k of ears, into
- * ev's slot k, reading the speed of sound and the bus set's bands. */
+/* discharge_event.c: event ev of voice v as heard by ear k of still ears,
+ * into ev->ear[k], reading the speed of sound and the bus set's bands. */
 void fg_event_geometry(const fg_discharge_voice *v, fg_event *ev, const fg_ears *ears, int k,
                        double c_m_s, const fg_bus_set *buses);
+
+/* Event ev of voice v as ear k hears it when the instance emitting at
+ * emission_s (engine clock) reaches it along the listener's trajectory:
+ * the arrival solved on the trajectory, the geometry and Doppler rate
+ * there. [audio-thread] */
+void fg_event_ear_at(const fg_discharge_voice *v, const fg_event *ev, const fg_trajectory *traj,
+                     const fg_engine_config *cfg, double emission_s, int k,
+                     const fg_bus_set *buses, fg_event_ear *out);
 
 #endif

@@ -137,8 +137,10 @@ fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void
     size_t strike = mark_main_channel(nodes, n, s);
 
     const fg_engine_config *cfg = post->cfg;
+    fg_head head;
+    fg_head_of_pose(post->pose, &head);
     fg_ears ears;
-    fg_listener_ears(post->pose, cfg->channels, cfg->ear_spacing_m, &ears);
+    fg_head_ears(&head, cfg->channels, cfg->ear_spacing_m, &ears);
     memcpy(v->post_position, post->pose->position, sizeof v->post_position);
     v->sound = d->sound;
     fg_result checked = fg_propagation_config_resolve(&d->propagation, &v->propagation);
@@ -168,7 +170,7 @@ fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void
         ev->start_s = INFINITY;
         for (unsigned j = 0; j < ears.count; j++) {
             fg_event_geometry(v, ev, &ears, (int)j, cfg->speed_of_sound_m_s, post->buses);
-            ev->start_s = fmin(ev->start_s, model->start_s(ev, (int)j, cfg->speed_of_sound_m_s));
+            ev->start_s = fmin(ev->start_s, model->start_s(ev, &ev->ear[j], cfg->speed_of_sound_m_s));
         }
     }
     sort_by_start(v->events, v->event_count, s);

@@ -17,15 +17,30 @@ void fg_discharge_adopt(void *voice, const fg_block_context *block)
         v->continuous ? fg_rng_range(&v->rng, v->repeat_min_s, v->repeat_max_s) : -1.0;
 }
 
-static double look_ahead_s(const fg_engine_config *cfg, const fg_discharge_voice *v,
-                           const double position[3])
+/* How far the listener strays from where the voice was prepared while
+ * this block's waves can begin: at the block's pose when still; along the
+ * trajectory from the block's start to a span after its end (a wave that
+ * begins in the block arrives, at its centre, up to that much later)
+ * while moving. */
+#define WAVE_CENTRE_SPAN_S 0.1
+
+static double look_ahead_s(const fg_block_context *ctx, const fg_discharge_voice *v, double end_s)
 {
-    double d2 = 0;
-    for (int k = 0; k < 3; k++)
-        d2 += (position[k] - v->post_position[k]) * (position[k] - v->post_position[k]);
+    const fg_engine_config *cfg = ctx->cfg;
+    double moved;
+    if (ctx->trajectory->still) {
+        double d2 = 0;
+        for (int k = 0; k < 3; k++)
+            d2 += (ctx->position[k] - v->post_position[k]) * (ctx->position[k] - v->post_position[k]);
+        moved = sqrt(d2);
+    } else {
+        moved = fg_trajectory_reach_m(ctx->trajectory, v->post_position,
+                                      ctx->start_frame / cfg->sample_rate_hz,
+                                      end_s + WAVE_CENTRE_SPAN_S);
+    }
     double ears = cfg->channels == 2 ? cfg->ear_spacing_m : 0.0;
     /* 1 % for the growth of T with distance, two samples for rounding */
-    double m = 1.01 * (sqrt(d2) + ears) / cfg->speed_of_sound_m_s + 2.0 / cfg->sample_rate_hz;
+    double m = 1.01 * (moved + ears) / cfg->speed_of_sound_m_s + 2.0 / cfg->sample_rate_hz;
     return m < cfg->max_lookahead_s ? m : cfg->max_lookahead_s;
 }
 
@@ -53,7 +68,8 @@ void fg_discharge_begin_block(fg_discharge_voice *v, bool stopping, const fg_blo
         .ctx = ctx,
         .origin_frame = v->emit_frame - ctx->start_frame,
         .end_s = (ctx->start_frame + ctx->frames - v->emit_frame) / fs,
-        .margin_s = look_ahead_s(ctx->cfg, v, ctx->position),
+        .margin_s = look_ahead_s(ctx, v, (ctx->start_frame + ctx->frames) / fs),
+        .moving = !ctx->trajectory->still,
     };
     if (stopping) {
         /* emissions that have not begun by this block's start never will */

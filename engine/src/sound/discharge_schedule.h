@@ -17,9 +17,11 @@
 
 #include "discharge_internal.h"
 
-/* Adds ear play->ch of ev to the buses (fg_discharge_model's add). */
-typedef fg_wave_status (*fg_discharge_add_fn)(const fg_event *ev, const fg_event_play *play,
-                                              long *first, long *last);
+/* Adds ear play->ch of ev, as that ear hears it, to the buses
+ * (fg_discharge_model's add). */
+typedef fg_wave_status (*fg_discharge_add_fn)(const fg_event *ev, const fg_event_ear *ear,
+                                              const fg_event_play *play, long *first,
+                                              long *last);
 
 /* One block of one voice, as its instances see it. */
 typedef struct fg_discharge_block {
@@ -27,6 +29,7 @@ typedef struct fg_discharge_block {
     double origin_frame;   /* voice emission relative to the block's first sample */
     double end_s;          /* block end, seconds after the voice's emission */
     double margin_s;       /* the motion look-ahead */
+    bool moving;           /* the listener moves: each wave's ear is evaluated where it arrives */
 } fg_discharge_block;
 
 /* discharge_schedule.c: the block's start for the voice: the look-ahead,
@@ -40,20 +43,21 @@ static inline fg_event *fg_instance_event(fg_discharge_voice *v, const fg_instan
     return &v->events[in->main_only ? v->main_index[k] : k];
 }
 
-/* Adds ear ch of event ev to the buses through play (the instance's),
- * splitting it with the head-shadowed twin bus. Returns its status and its
- * first and last sample relative to the block. */
-static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, fg_event_play *play,
-                                                    unsigned ch, fg_discharge_add_fn add,
-                                                    long *first, long *last)
+/* Adds ear ch of event ev, as that ear hears it, to the buses through
+ * play (the instance's), splitting it with the head-shadowed twin bus.
+ * Returns its status and its first and last sample relative to the block. */
+static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg_event_ear *ear,
+                                                    fg_event_play *play, unsigned ch,
+                                                    fg_discharge_add_fn add, long *first,
+                                                    long *last)
 {
-    double shadow = ev->shadow[ch];
-    play->bus = ev->bus[ch];
+    double shadow = ear->shadow;
+    play->bus = ear->bus;
     play->ch = ch;
     /* shares below 2 % go whole to one side */
     play->share[0] = shadow < 0.02 ? 1.0 : shadow > 0.98 ? 0.0 : 1.0 - shadow;
     play->share[1] = shadow < 0.02 ? 0.0 : shadow > 0.98 ? 1.0 : shadow;
-    return add(ev, play, first, last);
+    return add(ev, ear, play, first, last);
 }
 
 /* Renders one instance; returns true once all its events are done. */
@@ -76,10 +80,12 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         .c_m_s = ctx->cfg->speed_of_sound_m_s,
         .frames = ctx->frames,
     };
+    /* the instance's emission on the engine clock, seconds */
+    const double emission_s = (v->emit_frame / play.fs_hz) + in->offset_s;
     uint64_t late = 0, lost = 0;
     for (uint32_t k = in->lo; k < in->hi; k++) {
         fg_event *ev = fg_instance_event(v, in, k);
-        if (ev->serial != ctx->serial) {
+        if (!vb->moving && ev->serial != ctx->serial) {
             for (unsigned ch = 0; ch < ctx->ears->count; ch++)
                 fg_event_geometry(v, ev, ctx->ears, (int)ch, ctx->cfg->speed_of_sound_m_s,
                                   ctx->buses);
@@ -89,7 +95,14 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         long lost_here = 0;
         for (unsigned ch = 0; ch < ctx->ears->count; ch++) {
             long a, b;
-            if (fg_discharge_add_event(ev, &play, ch, add, &a, &b) != FG_WAVE_DONE)
+            const fg_event_ear *ear = &ev->ear[ch];
+            fg_event_ear heard;
+            if (vb->moving) {
+                fg_event_ear_at(v, ev, ctx->trajectory, ctx->cfg, emission_s, (int)ch,
+                                ctx->buses, &heard);
+                ear = &heard;
+            }
+            if (fg_discharge_add_event(ev, ear, &play, ch, add, &a, &b) != FG_WAVE_DONE)
                 done = false;
             long missed = k >= first_new && a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
             if (missed > lost_here)

@@ -44,6 +44,7 @@ fg_result fg_preset_sound(fg_preset preset, fg_sound_config *out)
         .sigma0 = SIGMA0,
         .t0_jitter = T0_JITTER,
         .return_stroke_speed_m_s = RETURN_STROKE_SPEED_M_S,
+        .ref_half_len_m = presets[preset].scale.half_step_m,
     };
     return FG_OK;
 }
@@ -81,10 +82,11 @@ fg_result fg_sound_config_check(const fg_sound_config *p)
     if (!p)
         return FG_ERR_NULL;
     if (!isfinite(p->t0_s) || !isfinite(p->r0_m) || !isfinite(p->ps0_pa) ||
-        !isfinite(p->sigma0) || !isfinite(p->t0_jitter) || !isfinite(p->return_stroke_speed_m_s))
+        !isfinite(p->sigma0) || !isfinite(p->t0_jitter) || !isfinite(p->return_stroke_speed_m_s) ||
+        !isfinite(p->ref_half_len_m))
         return FG_ERR_NOT_FINITE;
     if (p->t0_s <= 0 || p->r0_m <= 0 || p->ps0_pa <= 0 || p->sigma0 < 0 || p->t0_jitter < 0 ||
-        p->t0_jitter >= 1 || p->return_stroke_speed_m_s <= 0)
+        p->t0_jitter >= 1 || p->return_stroke_speed_m_s <= 0 || p->ref_half_len_m < 0)
         return FG_ERR_ARGUMENT;
     return FG_OK;
 }

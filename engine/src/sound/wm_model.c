@@ -10,40 +10,45 @@ static size_t wm_stride(size_t segments)
     return 1;
 }
 
-static void wm_wave(const fg_sound_config *p, fg_event *ev, const fg_ear_path *path, int k)
+static void wm_wave(const fg_sound_config *p, const fg_event *ev, const fg_ear_path *path,
+                    fg_event_ear *ear)
 {
     const double *d = path->d;
     double r = path->r_m;
     /* sin(theta), theta from the segment's normal: |cos| of the angle to
      * the segment's axis */
     double s = r > 0 ? fabs(d[0] * ev->dir[0] + d[1] * ev->dir[1] + d[2] * ev->dir[2]) / r : 0;
-    ev->shape[k] = fg_wm_shape_at(p, ev->t0_s, r, s > 1.0 ? 1.0 : s, ev->half_len_m, path->c_m_s,
-                                  NULL);
-    ev->shape[k].b *= path->gain;
+    ear->wm = fg_wm_shape_at(p, ev->t0_s, r, s > 1.0 ? 1.0 : s, ev->half_len_m, path->c_m_s, NULL);
+    /* the line integral: the segment's share of the line, in reference
+     * segments (fg_sound_config.ref_half_len_m) */
+    double share = p->ref_half_len_m > 0 ? ev->half_len_m / p->ref_half_len_m : 1.0;
+    ear->wm.b *= path->gain * share;
 }
 
-static double wm_start_s(const fg_event *ev, int k, double c_m_s)
+static double wm_start_s(const fg_event *ev, const fg_event_ear *ear, double c_m_s)
 {
-    double half = (ev->shape[k].psi + ev->shape[k].s) * ev->half_len_m / c_m_s;
-    return ev->center_s[k] - half;
+    double half = (ear->wm.psi + ear->wm.s) * ev->half_len_m / c_m_s * ear->rate;
+    return ear->center_s - half;
 }
 
-static fg_wave_status wm_add(const fg_event *ev, const fg_event_play *play, long *first,
-                             long *last)
+/* A moving ear hears the wave stretched by its rate: tau advances
+ * (c - dr/dt) / l per second, so a unit of tau lasts rate l / c. */
+static fg_wave_status wm_add(const fg_event *ev, const fg_event_ear *ear,
+                             const fg_event_play *play, long *first, long *last)
 {
     const unsigned ch = play->ch;
     const double fs = play->fs_hz;
     fg_wm_event we = {
-        .shape = ev->shape[ch],
-        .center = play->origin_frame + (play->offset_s + ev->center_s[ch]) * fs,
-        .width = fs * ev->half_len_m / play->c_m_s,
+        .shape = ear->wm,
+        .center = play->origin_frame + (play->offset_s + ear->center_s) * fs,
+        .width = fs * ev->half_len_m / play->c_m_s * ear->rate,
     };
     fg_wm_event_span(&we, first, last);
     fg_wave_status status = FG_WAVE_DONE;
     for (int k = 0; k < 2; k++) {
         if (play->share[k] == 0.0)
             continue;
-        we.shape.b = ev->shape[ch].b * play->share[k];
+        we.shape.b = ear->wm.b * play->share[k];
         status = fg_wm_accum_add(fg_bus_accum(play->buses, play->bus + k * FG_BUS_PLAIN, ch), &we);
     }
     return status;
