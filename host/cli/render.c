@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "common/audio_file.h"
+#include "common/calibration.h"
 #include "common/clock.h"
 #include "common/commands.h"
 #include "common/options.h"
@@ -25,7 +26,19 @@ static const char about[] =
     "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n";
 
 static const char notes[] =
+    "Levels: by default a sample is the pressure in pascals (times the scene's \"gain\"),\n"
+    "so 1.0 (full scale) is 1 Pa and loud scenes exceed it: players clip them (a warning\n"
+    "says so). --gain-db or --normalize make a listenable file; its calibration, the\n"
+    "pascals that full scale stands for, is then written into the WAV's comment\n"
+    "(LIST/INFO ICMT, \"fulgur calibration: full scale = X Pa\") and printed, and\n"
+    "fulgur analyze reads it back to pascals.\n"
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
+
+/* The level of the written samples, from the command line. */
+typedef struct render_level {
+    double gain_db;        /* NAN: not given */
+    double normalize_dbfs; /* NAN: not given; else the peak wanted */
+} render_level;
 
 typedef struct render_job {
     const scene *s;
@@ -34,7 +47,9 @@ typedef struct render_job {
     size_t next;            /* the next of order to post */
     float *planes[2];
     float *interleaved;
-    SNDFILE *wav;
+    SNDFILE *wav;           /* NULL: a pass that only measures the peak */
+    float scale;            /* a sample = pascals x scale */
+    double peak;            /* the largest |sample| written (or measured) */
     size_t segments;
 } render_job;
 
@@ -85,8 +100,10 @@ static int post_due(render_job *job, double horizon_s, char *err, size_t err_siz
 
 static int write_block(render_job *job, uint32_t frames, char *err, size_t err_size)
 {
-    audio_interleave(job->planes, job->s->channels, frames, (float)job->s->gain, job->interleaved);
-    if (sf_writef_float(job->wav, job->interleaved, frames) != frames) {
+    audio_interleave(job->planes, job->s->channels, frames, job->scale, job->interleaved);
+    for (size_t i = 0; i < (size_t)frames * job->s->channels; i++)
+        job->peak = fmax(job->peak, fabs(job->interleaved[i]));
+    if (job->wav && sf_writef_float(job->wav, job->interleaved, frames) != frames) {
         snprintf(err, err_size, "writing the WAV: %s", sf_strerror(job->wav));
         return -1;
     }
@@ -136,11 +153,15 @@ static int run(render_job *job, uint64_t *frames_out, char *err, size_t err_size
     return 0;
 }
 
+/* A file at a level other than pascals says which (common/calibration.h);
+ * one in pascals stays byte for byte what it always was. */
 static int open_wav(render_job *job, temp_file *out, char *err, size_t err_size)
 {
     job->wav = audio_wav_open(out->fd, out->path, job->s->sample_rate_hz, job->s->channels, err,
                               err_size);
-    return job->wav ? 0 : -1;
+    if (!job->wav)
+        return -1;
+    return job->scale == 1.0f ? 0 : calibration_write(job->wav, 1.0 / job->scale, err, err_size);
 }
 
 static void release(render_job *job)
@@ -152,14 +173,55 @@ static void release(render_job *job)
     free(job->planes[1]);
 }
 
-static int render_file(const scene *s, const char *out_path)
+/* --normalize: the peak of a pass that renders without writing, at the
+ * scene's gain. The engine is deterministic: the written pass repeats
+ * these samples exactly, scaled. */
+static int measure_peak(const scene *s, double *peak, char *err, size_t err_size)
+{
+    render_job job = {.s = s, .scale = (float)s->gain};
+    uint64_t frames;
+    int rc = create_engine(&job, err, err_size) == 0 && run(&job, &frames, err, err_size) == 0
+                 ? 0 : -1;
+    *peak = job.peak;
+    release(&job);
+    return rc;
+}
+
+/* The scale of the written samples: the scene's gain, times --gain-db, or
+ * what brings the peak to --normalize. Returns -1 with a message. */
+static int level_scale(const scene *s, const render_level *level, float *scale, char *err,
+                       size_t err_size)
+{
+    double gain = s->gain;
+    if (!isnan(level->gain_db))
+        gain *= pow(10, level->gain_db / 20);
+    if (!isnan(level->normalize_dbfs)) {
+        double peak;
+        if (measure_peak(s, &peak, err, err_size) != 0)
+            return -1;
+        if (!(peak > 0)) {
+            snprintf(err, err_size, "--normalize: the scene is silent (peak 0): nothing to scale");
+            return -1;
+        }
+        gain *= pow(10, level->normalize_dbfs / 20) / peak;
+    }
+    *scale = (float)gain;
+    if (!(*scale > 0) || !isfinite(*scale)) {
+        snprintf(err, err_size, "the level gives a scale of %g, outside a 32-bit float", gain);
+        return -1;
+    }
+    return 0;
+}
+
+static int render_file(const scene *s, const char *out_path, const render_level *level)
 {
     char err[512];
     render_job job = {.s = s};
     temp_file out;
     uint64_t frames = 0;
     uint64_t t0 = monotonic_now_ns();
-    int ok = create_engine(&job, err, sizeof err) == 0 &&
+    int ok = level_scale(s, level, &job.scale, err, sizeof err) == 0 &&
+             create_engine(&job, err, sizeof err) == 0 &&
              temp_file_open(&out, out_path, err, sizeof err) == 0;
     if (!ok) {
         release(&job);
@@ -184,11 +246,18 @@ static int render_file(const scene *s, const char *out_path)
     }
     double wall = (double)(monotonic_now_ns() - t0) * 1e-9;
     double seconds = (double)frames / s->sample_rate_hz;
+    double full_scale_pa = 1.0 / job.scale;
     printf("%s: %zu discharges, %zu segments, %.3f s of sound (%u ch, %.0f Hz) in %.3f s wall, "
-           "%llu late events (%llu late samples)\n",
+           "%llu late events (%llu late samples); peak %+.1f dBFS, full scale = %.6g Pa%s\n",
            out_path, s->discharge_count, job.segments, seconds, (unsigned)s->channels,
            s->sample_rate_hz, wall, (unsigned long long)stats.late_events,
-           (unsigned long long)stats.late_samples);
+           (unsigned long long)stats.late_samples, calibration_dbfs(job.peak), full_scale_pa,
+           job.scale == 1.0f ? " (pascals)" : " (in the WAV's comment)");
+    if (job.peak > 1.0)
+        fprintf(stderr,
+                "fulgur: warning: %s peaks at %+.1f dBFS (%.4g Pa): a player clips it above "
+                "0 dBFS; --normalize -1 makes it listenable\n",
+                out_path, calibration_dbfs(job.peak), job.peak * full_scale_pa);
     return CLI_OK;
 }
 
@@ -196,6 +265,7 @@ int render_main(int argc, char **argv)
 {
     const char *scene_path = NULL, *out_path = NULL, *png_path = NULL;
     double png_time = NAN; /* NAN: not given (the parser takes finite numbers only) */
+    render_level level = {NAN, NAN};
     const option table[] = {
         {"-o", OPTION_TEXT, &out_path, "OUT.wav", .help = "the WAV to write", .required = true},
         {"--png", OPTION_TEXT, &png_path, "OUT.png",
@@ -204,6 +274,13 @@ int render_main(int argc, char **argv)
         {"--png-time", OPTION_NUMBER, &png_time, "SECONDS",
          .help = "the picture's time (default: the first return stroke)",
          .range = {.lo = -INFINITY, .hi = INFINITY}},
+        {"--gain-db", OPTION_NUMBER, &level.gain_db, "DB",
+         .help = "multiply the samples by 10^(DB/20) (default 0: pascals)",
+         .range = {.lo = -200, .hi = 200}},
+        {"--normalize", OPTION_NUMBER, &level.normalize_dbfs, "PEAK_DBFS",
+         .help = "scale the samples so that the peak is PEAK_DBFS, e.g. -1\n"
+                 "(renders twice: once to find the peak)",
+         .range = {.lo = -100, .hi = 0}},
         {0},
     };
     const command_line cl = {"fulgur render", "SCENE.json", 1, 1, about, notes, table};
@@ -211,6 +288,8 @@ int render_main(int argc, char **argv)
     options_result parsed = options_parse(&cl, argc, argv, &scene_path, &operands);
     if (parsed == OPTIONS_OK && !isnan(png_time) && !png_path)
         parsed = options_fail(&cl, "--png-time needs --png");
+    if (parsed == OPTIONS_OK && !isnan(level.gain_db) && !isnan(level.normalize_dbfs))
+        parsed = options_fail(&cl, "--gain-db and --normalize both set the level: give one");
     if (parsed != OPTIONS_OK)
         return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
 #ifndef FULGUR_HAVE_GPU
@@ -231,7 +310,7 @@ int render_main(int argc, char **argv)
         scene_deinit(&s);
         return CLI_USAGE;
     }
-    int rc = render_file(&s, out_path);
+    int rc = render_file(&s, out_path, &level);
 #ifdef FULGUR_HAVE_GPU
     if (rc == CLI_OK && png_path &&
         render_picture(&s, png_path, png_time, err, sizeof err) != 0) {

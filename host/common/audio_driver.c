@@ -5,6 +5,7 @@
 
 #include "audio_driver.h"
 #include "audio_file.h"
+#include "calibration.h"
 
 int audio_output_parse(const char *text, void *output, char *why, size_t why_size)
 {
@@ -54,6 +55,12 @@ int audio_driver_start(audio_driver *d, const audio_output *out, double rate_hz,
         goto fail;
     d->wav = audio_wav_open(d->file.fd, path, rate_hz, channels, err, err_size);
     if (!d->wav) {
+        temp_file_abort(&d->file);
+        goto fail;
+    }
+    /* not in pascals: the file says what full scale is */
+    if (gain != 1.0f && calibration_write(d->wav, 1.0 / gain, err, err_size) != 0) {
+        sf_close(d->wav);
         temp_file_abort(&d->file);
         goto fail;
     }
