@@ -7,13 +7,13 @@
 
 #include <lv2/atom/util.h>
 #include <lv2/midi/midi.h>
+#include <lv2/presets/presets.h>
 #include <lv2/state/state.h>
 #include <lv2/urid/urid.h>
 #include <lv2/worker/worker.h>
 
 #include "lilv_host.h"
 
-#define PLUGIN_URI "urn:fulgur:lv2:instrument"
 #define MAX_PORTS 32
 #define MAX_URIDS 64
 #define MAX_JOBS 64
@@ -147,11 +147,11 @@ lv2_host *lv2_host_create(double rate_hz)
         return NULL;
     }
     lilv_world_load_all(h->world);   /* reads LV2_PATH */
-    LilvNode *uri = lilv_new_uri(h->world, PLUGIN_URI);
+    LilvNode *uri = lilv_new_uri(h->world, FULGUR_LV2_URI);
     h->plugin = lilv_plugins_get_by_uri(lilv_world_get_all_plugins(h->world), uri);
     lilv_node_free(uri);
     if (!h->plugin) {
-        fprintf(stderr, "lv2_host: %s not found on LV2_PATH=%s\n", PLUGIN_URI,
+        fprintf(stderr, "lv2_host: %s not found on LV2_PATH=%s\n", FULGUR_LV2_URI,
                 getenv("LV2_PATH") ? getenv("LV2_PATH") : "(unset)");
         lv2_host_destroy(h);
         return NULL;
@@ -285,4 +285,70 @@ LilvState *lv2_host_save(lv2_host *h)
 void lv2_host_restore(lv2_host *h, const LilvState *state)
 {
     lilv_state_restore(state, h->instance, set_port_value, h, 0, h->features);
+}
+
+/* Calls each(h, preset node, its label, user) for every preset of the
+ * plugin (loading each), until each returns non-zero; returns that, or 0. */
+static int for_each_preset(lv2_host *h,
+                           int (*each)(lv2_host *h, const LilvNode *preset, const char *label,
+                                       void *user),
+                           void *user)
+{
+    LilvNode *kind = lilv_new_uri(h->world, LV2_PRESETS__Preset);
+    LilvNode *rdfs_label = lilv_new_uri(h->world, LILV_NS_RDFS "label");
+    LilvNodes *all = lilv_plugin_get_related(h->plugin, kind);
+    int rc = 0;
+    LILV_FOREACH(nodes, it, all) {
+        const LilvNode *preset = lilv_nodes_get(all, it);
+        lilv_world_load_resource(h->world, preset);
+        LilvNode *text = lilv_world_get(h->world, preset, rdfs_label, NULL);
+        rc = each(h, preset, text ? lilv_node_as_string(text) : "", user);
+        lilv_node_free(text);
+        if (rc)
+            break;
+    }
+    lilv_nodes_free(all);
+    lilv_node_free(rdfs_label);
+    lilv_node_free(kind);
+    return rc;
+}
+
+typedef struct label_list {
+    char (*labels)[LV2_HOST_LABEL_BYTES];
+    unsigned max, count;
+} label_list;
+
+static int note_label(lv2_host *h, const LilvNode *preset, const char *label, void *user)
+{
+    (void)h, (void)preset;
+    label_list *l = user;
+    if (l->count < l->max)
+        snprintf(l->labels[l->count], LV2_HOST_LABEL_BYTES, "%s", label);
+    l->count++;
+    return 0;
+}
+
+unsigned lv2_host_presets(lv2_host *h, char (*labels)[LV2_HOST_LABEL_BYTES], unsigned max)
+{
+    label_list l = {labels, max, 0};
+    for_each_preset(h, note_label, &l);
+    return l.count;
+}
+
+/* Applies the preset if its label is the one wanted: 1 done, -1 failed. */
+static int apply_if_named(lv2_host *h, const LilvNode *preset, const char *label, void *user)
+{
+    if (strcmp(label, user) != 0)
+        return 0;
+    LilvState *state = lilv_state_new_from_world(h->world, &h->map, preset);
+    if (!state)
+        return -1;
+    lv2_host_restore(h, state);
+    lilv_state_free(state);
+    return 1;
+}
+
+int lv2_host_preset_apply(lv2_host *h, const char *label)
+{
+    return for_each_preset(h, apply_if_named, (void *)label) == 1 ? 0 : -1;
 }
