@@ -16,22 +16,33 @@ int audio_output_parse(const char *text, void *output, char *why, size_t why_siz
         *out = (audio_output){AUDIO_DRIVER_RAW, NULL};
     } else if (strncmp(text, "wav:", 4) == 0 && text[4]) {
         *out = (audio_output){AUDIO_DRIVER_WAV, text + 4};
+    } else if (strcmp(text, "jack") == 0 || (strncmp(text, "jack:", 5) == 0 && text[5])) {
+        *out = (audio_output){AUDIO_DRIVER_JACK, text[4] ? text + 5 : NULL};
+    } else if (strcmp(text, "portaudio") == 0 || (strncmp(text, "portaudio:", 10) == 0 && text[10])) {
+        *out = (audio_output){AUDIO_DRIVER_PORTAUDIO, text[9] ? text + 10 : NULL};
     } else {
-        snprintf(why, why_size, "expected null, wav:FILE or raw:-");
+        snprintf(why, why_size, "expected null, wav:FILE, raw:-, jack[:SERVER] or portaudio[:DEVICE]");
         return -1;
     }
     return 0;
 }
 
+bool audio_output_is_live(const audio_output *out)
+{
+    return out->kind == AUDIO_DRIVER_JACK || out->kind == AUDIO_DRIVER_PORTAUDIO ||
+           out->kind == AUDIO_DRIVER_AUTO;
+}
+
 option audio_output_option(audio_output *out, const char *help)
 {
-    return (option){"--audio", OPTION_PARSED, out, "null|wav:FILE|raw:-", .help = help,
+    return (option){"--audio", OPTION_PARSED, out, "null|wav:FILE|raw:-|jack[:SERVER]|portaudio[:DEV]",
+                    .help = help,
                     .parse = audio_output_parse};
 }
 
 const char *audio_driver_name(audio_driver_kind kind)
 {
-    static const char *const names[] = {"null", "wav", "raw"};
+    static const char *const names[] = {"null", "wav", "raw", "jack", "portaudio", "auto"};
     return names[kind];
 }
 
@@ -42,7 +53,7 @@ int audio_driver_start(audio_driver *d, const audio_output *out, double rate_hz,
     audio_driver_kind kind = out->kind;
     const char *path = out->wav_path;
     *d = (audio_driver){.kind = kind, .channels = channels, .gain = gain};
-    if (kind == AUDIO_DRIVER_NULL)
+    if (kind == AUDIO_DRIVER_NULL || audio_output_is_live(out))
         return 0;
     d->interleaved = malloc((size_t)block_frames * channels * sizeof(float));
     if (!d->interleaved) {
@@ -74,7 +85,7 @@ fail:
 int audio_driver_write(audio_driver *d, float *const *planes, uint32_t frames, char *err,
                        size_t err_size)
 {
-    if (d->kind == AUDIO_DRIVER_NULL)
+    if (d->kind != AUDIO_DRIVER_WAV && d->kind != AUDIO_DRIVER_RAW)
         return 0;
     audio_interleave(planes, d->channels, frames, d->gain, d->interleaved);
     if (d->kind == AUDIO_DRIVER_RAW) {
