@@ -1,4 +1,6 @@
 /* The null, WAV and raw drivers. */
+#include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -60,8 +62,12 @@ int audio_driver_start(audio_driver *d, const audio_output *out, double rate_hz,
         snprintf(err, err_size, "out of memory");
         return -1;
     }
-    if (kind == AUDIO_DRIVER_RAW)
+    if (kind == AUDIO_DRIVER_RAW) {
+        /* a reader that goes away is an error to report, not a silent
+         * death by SIGPIPE (exit 141) */
+        signal(SIGPIPE, SIG_IGN);
         return 0;
+    }
     if (temp_file_open(&d->file, path, err, err_size) != 0)
         goto fail;
     d->wav = audio_wav_open(d->file.fd, path, rate_hz, channels, err, err_size);
@@ -90,7 +96,13 @@ int audio_driver_write(audio_driver *d, float *const *planes, uint32_t frames, c
     audio_interleave(planes, d->channels, frames, d->gain, d->interleaved);
     if (d->kind == AUDIO_DRIVER_RAW) {
         if (fwrite(d->interleaved, sizeof(float) * d->channels, frames, stdout) != frames) {
-            snprintf(err, err_size, "writing raw samples to stdout failed");
+            if (errno == EPIPE)
+                snprintf(err, err_size, "raw:-: the program reading stdout closed the pipe "
+                                        "(for | aplay, Debian's alsa-utils; aplay -l lists the "
+                                        "sound cards)");
+            else
+                snprintf(err, err_size, "writing raw samples to stdout failed: %s",
+                         strerror(errno));
             return -1;
         }
         return 0;
