@@ -56,12 +56,16 @@ typedef struct render_job {
 static int create_engine(render_job *job, char *err, size_t err_size)
 {
     const scene *s = job->s;
-    for (size_t i = 0; i < s->discharge_count; i++)
-        job->segments += s->discharges[i].post.node_count - 1;
+    size_t capacity = 0; /* a ground image counts each segment twice (fulgur/engine.h) */
+    for (size_t i = 0; i < s->discharge_count; i++) {
+        const fg_discharge *d = &s->discharges[i].post;
+        job->segments += d->node_count - 1;
+        capacity += (d->node_count - 1) * (d->propagation.ground_reflection > 0 ? 2 : 1);
+    }
     fg_engine_config cfg;
     scene_engine_config(s, &cfg);
     cfg.max_voices = (uint32_t)s->discharge_count;
-    cfg.segment_capacity = job->segments > UINT32_MAX ? UINT32_MAX : (uint32_t)job->segments;
+    cfg.segment_capacity = capacity > UINT32_MAX ? UINT32_MAX : (uint32_t)capacity;
     fg_result r = fg_engine_create(&cfg, &job->engine);
     if (r != FG_OK) {
         snprintf(err, err_size, "engine for %zu discharges and %zu segments: %s",
