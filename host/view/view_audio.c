@@ -83,6 +83,8 @@ int view_open_live(view *v, double *rate_hz, int *rc, char *err, size_t err_size
 {
     const audio_output *out = &v->opt.audio;
     *rc = CLI_USAGE;
+    if (!audio_output_is_live(out))
+        return 0;
     if (headless(v)) {
         if (out->kind == AUDIO_DRIVER_AUTO)
             return 0;
