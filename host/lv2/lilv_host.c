@@ -1,9 +1,11 @@
 /* A small lilv host for fulgur.lv2: see lilv_host.h. */
-#define _POSIX_C_SOURCE 200809L /* strdup */
+#define _POSIX_C_SOURCE 200809L /* strdup, getcwd */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <lv2/atom/util.h>
 #include <lv2/midi/midi.h>
@@ -138,6 +140,48 @@ static void connect_ports(lv2_host *h)
     lv2_atom_sequence_clear(&h->midi.seq);
 }
 
+/* LV2_PATH for lilv, its relative entries made absolute: lilv 0.24 takes
+ * "dir/x.lv2" for a URI and crashes in lilv_world_load_bundle. Entries that
+ * are absolute or start with ~ (lilv expands it) are kept. Returns 0, or -1
+ * when out of memory or the working directory is unknown. */
+static int set_lv2_path(LilvWorld *world)
+{
+    const char *path = getenv("LV2_PATH");
+    if (!path)
+        return 0;
+    char cwd[PATH_MAX];
+    if (!getcwd(cwd, sizeof cwd))
+        return -1;
+    size_t entries = 1;
+    for (const char *c = path; *c; c++)
+        entries += *c == ':';
+    char *out = malloc(strlen(path) + entries * (strlen(cwd) + 1) + 1);
+    if (!out)
+        return -1;
+    char *end = out;
+    for (const char *entry = path; entry;) {
+        const char *colon = strchr(entry, ':');
+        size_t n = colon ? (size_t)(colon - entry) : strlen(entry);
+        if (n > 0) {
+            if (end != out)
+                *end++ = ':';
+            if (entry[0] != '/' && entry[0] != '~')
+                end += sprintf(end, "%s/", cwd);
+            memcpy(end, entry, n);
+            end += n;
+        }
+        entry = colon ? colon + 1 : NULL;
+    }
+    *end = '\0';
+    LilvNode *node = lilv_new_string(world, out);
+    free(out);
+    if (!node)
+        return -1;
+    lilv_world_set_option(world, LILV_OPTION_LV2_PATH, node);
+    lilv_node_free(node);
+    return 0;
+}
+
 lv2_host *lv2_host_create(double rate_hz)
 {
     lv2_host *h = calloc(1, sizeof *h);
@@ -146,7 +190,12 @@ lv2_host *lv2_host_create(double rate_hz)
         free(h);
         return NULL;
     }
-    lilv_world_load_all(h->world);   /* reads LV2_PATH */
+    if (set_lv2_path(h->world) != 0) {
+        fprintf(stderr, "lv2_host: out of memory or no working directory for LV2_PATH\n");
+        lv2_host_destroy(h);
+        return NULL;
+    }
+    lilv_world_load_all(h->world);
     LilvNode *uri = lilv_new_uri(h->world, FULGUR_LV2_URI);
     h->plugin = lilv_plugins_get_by_uri(lilv_world_get_all_plugins(h->world), uri);
     lilv_node_free(uri);
