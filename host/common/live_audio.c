@@ -1,8 +1,18 @@
-/* The live device's common part: the backend table, chunking, queries. */
+/* The live device's common part: the backend table, loading a backend's
+ * library, chunking, queries. */
+#include <dlfcn.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "live_audio.h"
+
+/* A backend built without its library's headers: live_audio_open says so. */
+#ifndef FULGUR_HAVE_JACK
+const live_backend live_jack_backend = {"jack", "libjack-jackd2-dev", NULL, NULL, NULL};
+#endif
+#ifndef FULGUR_HAVE_PORTAUDIO
+const live_backend live_portaudio_backend = {"portaudio", "portaudio19-dev", NULL, NULL, NULL};
+#endif
 
 live_result live_audio_open(const live_config *config, live_audio **out, char *err,
                             size_t err_size)
@@ -14,6 +24,12 @@ live_result live_audio_open(const live_config *config, live_audio **out, char *e
     }
     a->config = *config;
     a->backend = config->kind == LIVE_JACK ? &live_jack_backend : &live_portaudio_backend;
+    if (!a->backend->open) {
+        snprintf(err, err_size, "--audio %s: this fulgur was built without %s; install it and "
+                                "reconfigure", a->backend->driver, a->backend->dev_package);
+        free(a);
+        return LIVE_ABSENT;
+    }
     live_result r = a->backend->open(config, a, err, err_size);
     if (r != LIVE_OK) {
         free(a);
@@ -21,6 +37,24 @@ live_result live_audio_open(const live_config *config, live_audio **out, char *e
     }
     *out = a;
     return LIVE_OK;
+}
+
+void *live_library_load(const char *driver, const char *library, const char *package,
+                        const live_symbol *symbols, size_t count, char *err, size_t err_size)
+{
+    void *lib = dlopen(library, RTLD_NOW | RTLD_LOCAL);
+    if (!lib) {
+        snprintf(err, err_size, "--audio %s: cannot load %s (Debian: %s): %s", driver, library,
+                 package, dlerror());
+        return NULL;
+    }
+    for (size_t i = 0; i < count; i++)
+        if (!(*symbols[i].slot = dlsym(lib, symbols[i].name))) {
+            snprintf(err, err_size, "--audio %s: %s has no %s", driver, library, symbols[i].name);
+            dlclose(lib);
+            return NULL;
+        }
+    return lib;
 }
 
 double live_audio_rate_hz(const live_audio *a)

@@ -80,8 +80,12 @@ const char *live_audio_describe(const live_audio *a);
 /* Stops the callbacks and closes; NULL is a no-op. [main-thread] */
 void live_audio_close(live_audio *a);
 
-/* The backends (live_jack.c, live_portaudio.c). */
+/* The backends (live_jack.c, live_portaudio.c). One built without its
+ * library's headers (live_audio.c) has no functions, only its name and
+ * the package that builds it, for live_audio_open's message. */
 typedef struct live_backend {
+    const char *driver;      /* as --audio names it: "jack" */
+    const char *dev_package; /* the Debian package of its headers */
     live_result (*open)(const live_config *config, live_audio *a, char *err, size_t err_size);
     int (*start)(live_audio *a, char *err, size_t err_size);
     void (*close)(live_audio *a);
@@ -100,6 +104,20 @@ struct live_audio {
     _Atomic int lost;
     char description[160];
 };
+
+/* One function a backend takes from its library: its name, and where its
+ * address goes (POSIX lets dlsym's object pointer stand for a function). */
+typedef struct live_symbol {
+    const char *name;
+    void **slot;
+} live_symbol;
+#define LIVE_SYMBOL(field, function) {#function, (void **)&(field)}
+
+/* dlopens library (RTLD_LOCAL) and resolves the count symbols. Returns its
+ * handle, or NULL with a message naming --audio driver and the Debian
+ * package that installs the library (nothing left open). [main-thread] */
+void *live_library_load(const char *driver, const char *library, const char *package,
+                        const live_symbol *symbols, size_t count, char *err, size_t err_size);
 
 /* Calls config.process over frames in chunks of at most max_chunk_frames,
  * planes advanced for each. [audio-thread] */

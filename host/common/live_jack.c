@@ -1,7 +1,6 @@
 /* The JACK backend: libjack opened with dlopen (live_audio.h says why), a
  * client with one output port per channel, the process callback pulling
  * the engine. */
-#ifdef FULGUR_HAVE_JACK
 #include <dlfcn.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,37 +42,28 @@ typedef struct jack_state {
 
 static int load(jack_api *api, char *err, size_t err_size)
 {
-    if (!(api->lib = dlopen(JACK_LIBRARY, RTLD_NOW | RTLD_LOCAL))) {
-        snprintf(err, err_size, "--audio jack: cannot load %s (Debian: libjack-jackd2-0): %s",
-                 JACK_LIBRARY, dlerror());
-        return -1;
-    }
-    /* POSIX converts dlsym's object pointer to a function pointer */
-#define RESOLVE(field, name)                                                       \
-    if (!(*(void **)&api->field = dlsym(api->lib, #name))) {                       \
-        snprintf(err, err_size, "--audio jack: %s has no %s", JACK_LIBRARY, #name); \
-        dlclose(api->lib);                                                         \
-        return -1;                                                                 \
-    }
-    RESOLVE(client_open, jack_client_open)
-    RESOLVE(client_close, jack_client_close)
-    RESOLVE(get_sample_rate, jack_get_sample_rate)
-    RESOLVE(get_buffer_size, jack_get_buffer_size)
-    RESOLVE(port_register, jack_port_register)
-    RESOLVE(port_get_buffer, jack_port_get_buffer)
-    RESOLVE(port_name, jack_port_name)
-    RESOLVE(set_process_callback, jack_set_process_callback)
-    RESOLVE(set_xrun_callback, jack_set_xrun_callback)
-    RESOLVE(on_shutdown, jack_on_shutdown)
-    RESOLVE(activate, jack_activate)
-    RESOLVE(deactivate, jack_deactivate)
-    RESOLVE(get_ports, jack_get_ports)
-    RESOLVE(connect, jack_connect)
-    RESOLVE(free, jack_free)
-    RESOLVE(set_error_function, jack_set_error_function)
-    RESOLVE(set_info_function, jack_set_info_function)
-#undef RESOLVE
-    return 0;
+    const live_symbol symbols[] = {
+        LIVE_SYMBOL(api->client_open, jack_client_open),
+        LIVE_SYMBOL(api->client_close, jack_client_close),
+        LIVE_SYMBOL(api->get_sample_rate, jack_get_sample_rate),
+        LIVE_SYMBOL(api->get_buffer_size, jack_get_buffer_size),
+        LIVE_SYMBOL(api->port_register, jack_port_register),
+        LIVE_SYMBOL(api->port_get_buffer, jack_port_get_buffer),
+        LIVE_SYMBOL(api->port_name, jack_port_name),
+        LIVE_SYMBOL(api->set_process_callback, jack_set_process_callback),
+        LIVE_SYMBOL(api->set_xrun_callback, jack_set_xrun_callback),
+        LIVE_SYMBOL(api->on_shutdown, jack_on_shutdown),
+        LIVE_SYMBOL(api->activate, jack_activate),
+        LIVE_SYMBOL(api->deactivate, jack_deactivate),
+        LIVE_SYMBOL(api->get_ports, jack_get_ports),
+        LIVE_SYMBOL(api->connect, jack_connect),
+        LIVE_SYMBOL(api->free, jack_free),
+        LIVE_SYMBOL(api->set_error_function, jack_set_error_function),
+        LIVE_SYMBOL(api->set_info_function, jack_set_info_function),
+    };
+    api->lib = live_library_load("jack", JACK_LIBRARY, "libjack-jackd2-0", symbols,
+                                 sizeof symbols / sizeof symbols[0], err, err_size);
+    return api->lib ? 0 : -1;
 }
 
 /* libjack prints its own lines ("Cannot connect to server socket ...");
@@ -190,22 +180,5 @@ static void jack_close(live_audio *a)
     free(s);
 }
 
-const live_backend live_jack_backend = {jack_open, jack_start, jack_close};
-
-#else /* built without the JACK headers */
-
-#include <stdio.h>
-
-#include "live_audio.h"
-
-static live_result absent(const live_config *c, live_audio *a, char *err, size_t err_size)
-{
-    (void)c, (void)a;
-    snprintf(err, err_size, "--audio jack: this fulgur was built without libjack-jackd2-dev; install it "
-                            "and reconfigure");
-    return LIVE_ABSENT;
-}
-
-const live_backend live_jack_backend = {absent, NULL, NULL};
-
-#endif
+const live_backend live_jack_backend = {"jack", "libjack-jackd2-dev", jack_open, jack_start,
+                                        jack_close};

@@ -1,7 +1,6 @@
 /* The PortAudio backend: libportaudio opened with dlopen (live_audio.h
  * says why), a non-interleaved float output stream whose callback pulls
  * the engine. */
-#ifdef FULGUR_HAVE_PORTAUDIO
 #include <dlfcn.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -36,30 +35,22 @@ typedef struct pa_state {
 
 static int load(pa_api *api, char *err, size_t err_size)
 {
-    if (!(api->lib = dlopen(PORTAUDIO_LIBRARY, RTLD_NOW | RTLD_LOCAL))) {
-        snprintf(err, err_size, "--audio portaudio: cannot load %s (Debian: libportaudio2): %s",
-                 PORTAUDIO_LIBRARY, dlerror());
-        return -1;
-    }
-#define RESOLVE(field, name)                                                              \
-    if (!(*(void **)&api->field = dlsym(api->lib, #name))) {                              \
-        snprintf(err, err_size, "--audio portaudio: %s has no %s", PORTAUDIO_LIBRARY, #name); \
-        dlclose(api->lib);                                                                \
-        return -1;                                                                        \
-    }
-    RESOLVE(initialize, Pa_Initialize)
-    RESOLVE(terminate, Pa_Terminate)
-    RESOLVE(error_text, Pa_GetErrorText)
-    RESOLVE(device_count, Pa_GetDeviceCount)
-    RESOLVE(device_info, Pa_GetDeviceInfo)
-    RESOLVE(default_output, Pa_GetDefaultOutputDevice)
-    RESOLVE(host_api_info, Pa_GetHostApiInfo)
-    RESOLVE(open_stream, Pa_OpenStream)
-    RESOLVE(start_stream, Pa_StartStream)
-    RESOLVE(stop_stream, Pa_StopStream)
-    RESOLVE(close_stream, Pa_CloseStream)
-#undef RESOLVE
-    return 0;
+    const live_symbol symbols[] = {
+        LIVE_SYMBOL(api->initialize, Pa_Initialize),
+        LIVE_SYMBOL(api->terminate, Pa_Terminate),
+        LIVE_SYMBOL(api->error_text, Pa_GetErrorText),
+        LIVE_SYMBOL(api->device_count, Pa_GetDeviceCount),
+        LIVE_SYMBOL(api->device_info, Pa_GetDeviceInfo),
+        LIVE_SYMBOL(api->default_output, Pa_GetDefaultOutputDevice),
+        LIVE_SYMBOL(api->host_api_info, Pa_GetHostApiInfo),
+        LIVE_SYMBOL(api->open_stream, Pa_OpenStream),
+        LIVE_SYMBOL(api->start_stream, Pa_StartStream),
+        LIVE_SYMBOL(api->stop_stream, Pa_StopStream),
+        LIVE_SYMBOL(api->close_stream, Pa_CloseStream),
+    };
+    api->lib = live_library_load("portaudio", PORTAUDIO_LIBRARY, "libportaudio2", symbols,
+                                 sizeof symbols / sizeof symbols[0], err, err_size);
+    return api->lib ? 0 : -1;
 }
 
 /* ALSA and libjack, which PortAudio loads, print a screenful while it looks
@@ -207,22 +198,5 @@ static void pa_close(live_audio *a)
     free(s);
 }
 
-const live_backend live_portaudio_backend = {pa_open, pa_start, pa_close};
-
-#else /* built without the PORTAUDIO headers */
-
-#include <stdio.h>
-
-#include "live_audio.h"
-
-static live_result absent(const live_config *c, live_audio *a, char *err, size_t err_size)
-{
-    (void)c, (void)a;
-    snprintf(err, err_size, "--audio portaudio: this fulgur was built without portaudio19-dev; install it "
-                            "and reconfigure");
-    return LIVE_ABSENT;
-}
-
-const live_backend live_portaudio_backend = {absent, NULL, NULL};
-
-#endif
+const live_backend live_portaudio_backend = {"portaudio", "portaudio19-dev", pa_open, pa_start,
+                                             pa_close};
