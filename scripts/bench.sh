@@ -10,7 +10,10 @@ cmake --build build-bench -j2 >/dev/null
 mkdir -p bench/results
 for b in build-bench/bench/bench_*; do
   echo "== ${b##*/}"
-  "$b"
+  case ${b##*/} in
+    bench_startup) "$b" build-bench/host/fulgur bench/scenes/one_segment.json ;;
+    *) "$b" ;;
+  esac
 done
 for p in bench/plots/*.gp; do
   gnuplot "$p"
