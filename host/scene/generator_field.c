@@ -6,11 +6,11 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "fg_math.h"
 #include "fulgur/fulgur.h"
 #include "generator.h"
 #ifdef FULGUR_HOST_GPU
 #include "generator_field_gpu.h"
-#include "fg_math.h"
 #endif
 
 typedef struct ctx {
