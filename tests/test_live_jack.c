@@ -50,6 +50,9 @@ static jack_port_t *inputs[2];
 static float *recorded[2];
 static atomic_uint_fast64_t recorded_frames;
 static atomic_bool recording;
+/* begin_recording's handshake: a process cycle that finds recording off
+ * answers the latest pause asked for, so none of its writes is under way */
+static atomic_uint pause_asked, pause_seen;
 
 static void quiet(const char *message)
 {
@@ -65,8 +68,10 @@ static void sleep_ms(int ms)
 static int record(jack_nframes_t n, void *arg)
 {
     (void)arg;
-    if (!atomic_load(&recording))
+    if (!atomic_load(&recording)) {
+        atomic_store(&pause_seen, atomic_load(&pause_asked));
         return 0;
+    }
     uint64_t at = atomic_load(&recorded_frames);
     if (at + n > (uint64_t)MAX_SECONDS * RATE_HZ)
         return 0;
@@ -171,7 +176,11 @@ static int run_connected(char *const argv[], const char *out_path)
 static void begin_recording(void)
 {
     atomic_store(&recording, false);
-    sleep_ms(20); /* a process cycle or more: no write is under way */
+    unsigned asked = atomic_fetch_add(&pause_asked, 1) + 1;
+    for (int ms = 0; atomic_load(&pause_seen) != asked; ms++) {
+        assert_true(ms < 2000); /* the server runs a cycle every 5.3 ms */
+        sleep_ms(1);
+    }
     atomic_store(&recorded_frames, 0);
     memset(recorded[0], 0, sizeof(float) * MAX_SECONDS * RATE_HZ);
     memset(recorded[1], 0, sizeof(float) * MAX_SECONDS * RATE_HZ);

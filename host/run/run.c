@@ -111,8 +111,8 @@ static int run_live(run_ctx *run, char *err, size_t err_size)
     while (!run_stopping(run) && !live_audio_lost(run->live))
         monotonic_sleep_until_ns(monotonic_now_ns() + 10000000);
     int lost = live_audio_lost(run->live) && !run_stopping(run);
-    live_audio_close(run->live); /* the callbacks end here */
     run->live_xruns = live_audio_xruns(run->live);
+    live_audio_close(run->live); /* the callbacks end here */
     run->live = NULL;
     if (lost) {
         snprintf(err, err_size, "the sound server went away (at frame %llu)",
