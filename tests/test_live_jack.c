@@ -5,7 +5,9 @@
  *   --audio jack:NAME  exit 0; the report names the device and its xruns;
  *                      the recording holds the scene's four sparks, 0.5 s
  *                      apart to within a block and a half, at the level
- *                      the lock-step WAV of the same scene has (+-3 dB);
+ *                      the lock-step WAV of the same scene has (+-3 dB)
+ *                      (a spark may be lost with each xrun reported, the
+ *                      ones left still on the 0.5 s grid);
  *   --audio portaudio:system, the same through PortAudio's JACK device;
  *   no server of that name: exit 2 and the message.
  * Skipped (exit 77) with the reason when jackd is missing or cannot start.
@@ -53,6 +55,15 @@ static atomic_bool recording;
 /* begin_recording's handshake: a process cycle that finds recording off
  * answers the latest pause asked for, so none of its writes is under way */
 static atomic_uint pause_asked, pause_seen;
+/* the server's xruns while recording, as the recorder is told of them */
+static atomic_long server_xruns;
+
+static int count_xrun(void *arg)
+{
+    (void)arg;
+    atomic_fetch_add(&server_xruns, 1);
+    return 0;
+}
 
 static void quiet(const char *message)
 {
@@ -182,6 +193,7 @@ static void begin_recording(void)
         sleep_ms(1);
     }
     atomic_store(&recorded_frames, 0);
+    atomic_store(&server_xruns, 0);
     memset(recorded[0], 0, sizeof(float) * MAX_SECONDS * RATE_HZ);
     memset(recorded[1], 0, sizeof(float) * MAX_SECONDS * RATE_HZ);
     atomic_store(&recording, true);
@@ -240,23 +252,9 @@ static double reference_peak(void)
     return m;
 }
 
-static void check_recording(const char *what, const char *report_path)
+/* The xruns the report gives (it must name the device and give them). */
+static long reported_xruns(const char *report_path)
 {
-    size_t frames = (size_t)atomic_load(&recorded_frames);
-    double peak = peak_of(recorded, frames), want = reference_peak();
-    size_t at[SPARKS + 2];
-    int n = onsets(recorded, frames, peak, at, SPARKS + 2);
-    printf("%s: recorded %.2f s, peak %.4g Pa (lock-step WAV %.4g Pa, %+.2f dB), %d onsets\n", what,
-           (double)frames / RATE_HZ, peak, want, 20 * log10(peak / want), n);
-    assert_true(peak > 0);
-    assert_true(fabs(20 * log10(peak / want)) < 3);
-    assert_int_equal(n, SPARKS);
-    for (int i = 1; i < n; i++) {
-        double gap_s = (double)(at[i] - at[i - 1]) / RATE_HZ;
-        printf("  onset %d: %.4f s after the one before\n", i, gap_s);
-        assert_true(fabs(gap_s - SPARK_INTERVAL_S) < 1.5 * PERIOD / (double)RATE_HZ);
-    }
-    /* the report: the device and its xruns */
     FILE *r = fopen(report_path, "r");
     assert_non_null(r);
     char text[65536];
@@ -266,7 +264,38 @@ static void check_recording(const char *what, const char *report_path)
     char *xruns = strstr(text, "\"xruns\":");
     assert_non_null(strstr(text, "\"live\":"));
     assert_non_null(xruns);
-    printf("  xruns reported: %ld\n", strtol(xruns + 8, NULL, 10));
+    return strtol(xruns + 8, NULL, 10);
+}
+
+/* Every spark, on time, at the WAV's level. An xrun loses a period of the
+ * output, and a spark (a few milliseconds) can vanish with it: with n
+ * xruns (the more of fulgur's report and the server's own count, as the
+ * recorder was told) up to n sparks may be missing, and the onsets left
+ * are a whole number of intervals apart. Without xruns all four must be
+ * there. */
+static void check_recording(const char *what, const char *report_path)
+{
+    long reported = reported_xruns(report_path), seen = atomic_load(&server_xruns);
+    long xruns = reported > seen ? reported : seen;
+    size_t frames = (size_t)atomic_load(&recorded_frames);
+    double peak = peak_of(recorded, frames), want = reference_peak();
+    size_t at[SPARKS + 2];
+    int n = onsets(recorded, frames, peak, at, SPARKS + 2);
+    printf("%s: recorded %.2f s, peak %.4g Pa (lock-step WAV %.4g Pa, %+.2f dB), %d onsets, "
+           "%ld xruns (report %ld, server %ld)\n", what, (double)frames / RATE_HZ, peak, want,
+           20 * log10(peak / want), n, xruns, reported, seen);
+    assert_true(peak > 0);
+    assert_true(fabs(20 * log10(peak / want)) < 3);
+    assert_true(n <= SPARKS && n >= SPARKS - (xruns < SPARKS - 1 ? xruns : SPARKS - 1));
+    for (int i = 1; i < n; i++) {
+        double gap_s = (double)(at[i] - at[i - 1]) / RATE_HZ;
+        long intervals = lround(gap_s / SPARK_INTERVAL_S);
+        printf("  onset %d: %.4f s after the one before\n", i, gap_s);
+        assert_true(intervals >= 1);
+        if (n == SPARKS)
+            assert_int_equal(intervals, 1);
+        assert_true(fabs(gap_s - intervals * SPARK_INTERVAL_S) < 1.5 * PERIOD / (double)RATE_HZ);
+    }
 }
 
 static void test_jack(void **state)
@@ -341,7 +370,8 @@ int main(int argc, char **argv)
     inputs[0] = jack_port_register(client, "in_left", JACK_DEFAULT_AUDIO_TYPE, JackPortIsInput, 0);
     inputs[1] = jack_port_register(client, "in_right", JACK_DEFAULT_AUDIO_TYPE, JackPortIsInput, 0);
     if (!recorded[0] || !recorded[1] || !inputs[0] || !inputs[1] ||
-        jack_set_process_callback(client, record, NULL) != 0 || jack_activate(client) != 0) {
+        jack_set_process_callback(client, record, NULL) != 0 ||
+        jack_set_xrun_callback(client, count_xrun, NULL) != 0 || jack_activate(client) != 0) {
         stop_server();
         return 1;
     }
