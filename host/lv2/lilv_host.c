@@ -36,8 +36,8 @@ struct lv2_host {
     uint32_t port_count;
     float controls[MAX_PORTS];
     uint32_t audio_ports[2];
-    union {
-        LV2_Atom_Sequence seq;
+    union { /* LV2 atoms in a sequence are 64-bit aligned */
+        _Alignas(8) LV2_Atom_Sequence seq;
         unsigned char bytes[MIDI_BYTES];
     } midi;
     LV2_URID_Map map;
