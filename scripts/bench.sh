@@ -10,7 +10,10 @@ cmake --build build-bench -j2 >/dev/null
 mkdir -p bench/results
 for b in build-bench/bench/bench_*; do
   echo "== ${b##*/}"
-  "$b"
+  case ${b##*/} in
+    bench_startup) "$b" build-bench/host/fulgur bench/scenes/one_segment.json ;;
+    *) "$b" ;;
+  esac
 done
 echo "== python_render"
 PYTHONPATH=build-bench/python python3 bench/python_render.py build-bench/host/fulgur

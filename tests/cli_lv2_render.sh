@@ -1,7 +1,8 @@
 #!/bin/sh
 # fulgur-lv2-render on a one-note MIDI file: exit 0, one discharge, a WAV
-# whose peak `fulgur analyze` reads; on a file that is not MIDI: exit 2, the
-# message, no WAV. usage: cli_lv2_render.sh FULGUR_LV2_RENDER FULGUR
+# whose peak `fulgur analyze` reads; the same with LV2_PATH relative to the
+# working directory (lilv alone crashes on that); on a file that is not MIDI:
+# exit 2, the message, no WAV. usage: cli_lv2_render.sh FULGUR_LV2_RENDER FULGUR
 set -u
 render=$1 fulgur=$2
 dir=$(mktemp -d)
@@ -16,6 +17,12 @@ echo "$info"
 # a spark 5 m away peaks near 60 Pa; -30 dB makes that about 2
 echo "$info" | awk '{for (i = 1; i < NF; i++) if ($i == "peak") p = $(i + 1)} END {exit !(p > 0.5 && p < 10)}' ||
     { echo "peak out of range"; exit 1; }
+# LV2_PATH relative: a ../-path from a folder beside it, and an entry that is not there
+mkdir "$dir/cwd"
+relative=$(cd "$dir/cwd" && realpath --relative-to=. "$LV2_PATH")
+(cd "$dir/cwd" && LV2_PATH="nowhere:$relative" "$render" ../one.mid -o ../rel.wav -t 1 distance=5 gain=-30) ||
+    { echo "render with a relative LV2_PATH ($relative) failed"; exit 1; }
+cmp "$dir/one.wav" "$dir/rel.wav" || { echo "a relative LV2_PATH rendered other bytes"; exit 1; }
 printf 'not midi' > "$dir/bad.mid"
 "$render" "$dir/bad.mid" -o "$dir/bad.wav" 2> "$dir/err"
 rc=$?

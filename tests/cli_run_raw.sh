@@ -21,3 +21,9 @@ line=$("$fulgur" analyze "$tmp/a.wav") || exit 1
 echo "$line"
 echo "$line" | awk '{ for (i = 1; i < NF; i++) if ($i == "peak") exit !($(i + 1) > 1e-3); exit 1 }' ||
     { echo "the run is silent"; exit 1; }
+# a reader that stops early (a player that failed): exit 1 with the message,
+# not a silent death by SIGPIPE (141)
+rc=$( { "$fulgur" run "$scene" --audio raw:- --seconds 4 2> "$tmp/pipe.err"; echo $? > "$tmp/pipe.rc"; } | head -c 1000 > /dev/null; cat "$tmp/pipe.rc")
+cat "$tmp/pipe.err"
+[ "$rc" = 1 ] || { echo "a closed pipe gave exit $rc, expected 1"; exit 1; }
+grep -q "closed the pipe" "$tmp/pipe.err" || { echo "no message for the closed pipe"; exit 1; }

@@ -7,7 +7,7 @@ if ! command -v lv2_validate >/dev/null 2>&1 || ! command -v sord_validate >/dev
     echo "SKIPPED: lv2_validate or sord_validate not installed (Debian 12: lv2-dev, sordi)"
     exit 77
 fi
-out=$(lv2_validate "$bundle"/manifest.ttl "$bundle"/fulgur.ttl 2>&1)
+out=$(lv2_validate "$bundle"/*.ttl 2>&1)
 rc=$?
 echo "$out"
 # sord_validate reports "Found N errors"; anything but 0 fails

@@ -118,6 +118,23 @@ static void test_accepts(void **state)
     assert_false(v.loud);
     assert_int_equal(v.audio.kind, AUDIO_DRIVER_NULL);
     assert_true(isnan(v.any)); /* untouched */
+    /* the live devices, with and without a server or device name */
+    static const struct {
+        const char *line;
+        audio_driver_kind kind;
+        const char *target;
+    } live[] = {{"in -o a.wav --audio jack", AUDIO_DRIVER_JACK, NULL},
+                {"in -o a.wav --audio jack:studio", AUDIO_DRIVER_JACK, "studio"},
+                {"in -o a.wav --audio portaudio", AUDIO_DRIVER_PORTAUDIO, NULL},
+                {"in -o a.wav --audio portaudio:HDMI", AUDIO_DRIVER_PORTAUDIO, "HDMI"}};
+    for (size_t i = 0; i < sizeof live / sizeof live[0]; i++) {
+        assert_int_equal(parse(live[i].line, &v, msg, sizeof msg), OPTIONS_OK);
+        assert_int_equal(v.audio.kind, live[i].kind);
+        if (live[i].target)
+            assert_string_equal(v.audio.wav_path, live[i].target);
+        else
+            assert_null(v.audio.wav_path);
+    }
 }
 
 /* Each refusal: OPTIONS_BAD and a message that starts with the command and
@@ -139,8 +156,11 @@ static void test_refuses(void **state)
         {"in -o a.wav --voices 0", "prog: --voices 0: expected an integer in 1..4096\n"},
         {"in -o a.wav --voices 2.5", "prog: --voices 2.5: expected an integer in 1..4096\n"},
         {"in -o a.wav --voices 4097", "prog: --voices 4097: expected an integer in 1..4096\n"},
-        {"in -o a.wav --audio pulse", "prog: --audio pulse: expected null, wav:FILE or raw:-\n"},
-        {"in -o a.wav --audio wav:", "prog: --audio wav:: expected null, wav:FILE or raw:-\n"},
+        {"in -o a.wav --audio pulse", "prog: --audio pulse: expected null, wav:FILE, raw:-, jack[:SERVER] or portaudio[:DEVICE]\n"},
+        {"in -o a.wav --audio wav:", "prog: --audio wav:: expected null, wav:FILE, raw:-, jack[:SERVER] or portaudio[:DEVICE]\n"},
+        {"in -o a.wav --audio jack:", "prog: --audio jack:: expected null, wav:FILE, raw:-, jack[:SERVER] or portaudio[:DEVICE]\n"},
+        {"in -o a.wav --audio portaudio:", "prog: --audio portaudio:: expected null, wav:FILE, raw:-, jack[:SERVER] or portaudio[:DEVICE]\n"},
+        {"in -o a.wav --audio jackd", "prog: --audio jackd: expected null, wav:FILE, raw:-, jack[:SERVER] or portaudio[:DEVICE]\n"},
         {"in -o a.wav --voices", "prog: --voices needs a value: --voices N\n"},
         {"in -o a.wav --unknown 1",
          "prog: unknown option \"--unknown\" (prog --help lists them)\n"},

@@ -2,9 +2,11 @@
  * spectrogram as gnuplot-ready text (scripts/plot.gp draws them). */
 #include <math.h>
 #include <sndfile.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "common/calibration.h"
 #include "common/commands.h"
 #include "common/options.h"
 #include "common/temp_file.h"
@@ -14,7 +16,10 @@
 #define ENVELOPE_POINTS 2000
 #define P_REF_PA 20e-6
 
-static const char about[] = "Prints the peak and RMS pressure of a WAV.\n";
+static const char about[] =
+    "Prints the peak and RMS pressure of a WAV. A WAV that fulgur render wrote at\n"
+    "another level (--gain-db, --normalize) carries its calibration, which turns its\n"
+    "samples back into pascals; one without is taken to be in pascals.\n";
 
 static const char notes[] =
     "Exit: 0 done, 1 runtime error, 2 bad arguments or unreadable input.\n";
@@ -24,6 +29,9 @@ typedef struct audio {
     size_t frames;
     int channels;
     double rate_hz;
+    double full_scale_pa; /* what a sample of 1.0 stands for */
+    bool calibrated;      /* the file said so (else 1 Pa) */
+    double peak_fs;       /* the largest |sample| as stored */
 } audio;
 
 static int read_wav(const char *path, audio *a)
@@ -39,11 +47,18 @@ static int read_wav(const char *path, audio *a)
     a->rate_hz = info.samplerate;
     a->samples = malloc((a->frames ? a->frames : 1) * (size_t)a->channels * sizeof(float));
     int ok = a->samples && sf_readf_float(f, a->samples, info.frames) == info.frames;
+    a->calibrated = calibration_read(f, &a->full_scale_pa);
     sf_close(f);
     if (!ok) {
         fprintf(stderr, "fulgur: %s: cannot read %zu frames\n", path, a->frames);
         free(a->samples);
         return -1;
+    }
+    /* everything below is in pascals */
+    a->peak_fs = 0;
+    for (size_t i = 0; i < a->frames * (size_t)a->channels; i++) {
+        a->peak_fs = fmax(a->peak_fs, fabs(a->samples[i]));
+        a->samples[i] = (float)(a->samples[i] * a->full_scale_pa);
     }
     return 0;
 }
@@ -90,9 +105,11 @@ static void print_levels(const char *path, const audio *a)
         sum += (double)a->samples[i] * a->samples[i];
     }
     double rms = count ? sqrt(sum / (double)count) : 0;
-    printf("%s: %d ch, %.0f Hz, %.3f s, peak %.6g Pa (%.1f dB SPL), rms %.6g Pa\n", path,
-           a->channels, a->rate_hz, (double)a->frames / a->rate_hz, peak,
-           20 * log10(fmax(peak, 1e-12) / P_REF_PA), rms);
+    printf("%s: %d ch, %.0f Hz, %.3f s, peak %.6g Pa (%.1f dB SPL), rms %.6g Pa; "
+           "peak %+.1f dBFS, full scale = %.6g Pa (%s)\n",
+           path, a->channels, a->rate_hz, (double)a->frames / a->rate_hz, peak,
+           20 * log10(fmax(peak, 1e-12) / P_REF_PA), rms, calibration_dbfs(a->peak_fs),
+           a->full_scale_pa, a->calibrated ? "the file's calibration" : "no calibration: pascals");
 }
 
 int analyze_main(int argc, char **argv)

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "common/commands.h"
+#include "fulgur/version.h"
 
 static const struct {
     const char *name;
@@ -21,7 +22,8 @@ static const struct {
 
 static void usage(FILE *to)
 {
-    fprintf(to, "usage: fulgur COMMAND [ARGS...]   (fulgur COMMAND --help for each)\n\n");
+    fprintf(to, "usage: fulgur COMMAND [ARGS...]   (fulgur COMMAND --help for each)\n"
+                "       fulgur --version\n\n");
     for (size_t i = 0; i < COMMAND_COUNT; i++)
         fprintf(to, "  %-8s %s\n", commands[i].name, commands[i].summary);
 }
@@ -34,6 +36,10 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         usage(stdout);
+        return CLI_OK;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("%s\n", fg_version_string());
         return CLI_OK;
     }
     for (size_t i = 0; i < COMMAND_COUNT; i++)

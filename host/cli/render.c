@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "common/audio_file.h"
+#include "common/calibration.h"
 #include "common/clock.h"
 #include "common/commands.h"
 #include "common/options.h"
@@ -35,6 +36,12 @@ static const char about[] =
     "progress line (docs/batch.md).\n";
 
 static const char notes[] =
+    "Levels: by default a sample is the pressure in pascals (times the scene's \"gain\"),\n"
+    "so 1.0 (full scale) is 1 Pa and loud scenes exceed it: players clip them (a warning\n"
+    "says so). --gain-db or --normalize make a listenable file; its calibration, the\n"
+    "pascals that full scale stands for, is then written into the WAV's comment\n"
+    "(LIST/INFO ICMT, \"fulgur calibration: full scale = X Pa\") and printed, and\n"
+    "fulgur analyze reads it back to pascals.\n"
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
 
 /* The --set values, in order. */
@@ -54,10 +61,17 @@ static int add_set(const char *text, void *value, char *why, size_t why_size)
     return 0;
 }
 
+/* The level of the written samples, from the command line. */
+typedef struct render_level {
+    double gain_db;        /* NAN: not given */
+    double normalize_dbfs; /* NAN: not given; else the peak wanted */
+} render_level;
+
 /* What the sink writes a scene's blocks into. */
 typedef struct wav_sink {
     const scene *s;
-    SNDFILE *wav;
+    SNDFILE *wav;          /* NULL: a pass that only measures the peak */
+    float scale;           /* a sample = pascals x scale */
     const char *path;
     float *interleaved;
     float peak;
@@ -69,10 +83,10 @@ static fg_result write_block(void *context, float *const *planes, uint32_t frame
                              size_t err_size)
 {
     wav_sink *w = context;
-    audio_interleave(planes, w->s->channels, frames, (float)w->s->gain, w->interleaved);
+    audio_interleave(planes, w->s->channels, frames, w->scale, w->interleaved);
     size_t n = (size_t)frames * w->s->channels;
     w->peak = audio_peak(w->interleaved, n, w->peak);
-    if (sf_writef_float(w->wav, w->interleaved, frames) != frames) {
+    if (w->wav && sf_writef_float(w->wav, w->interleaved, frames) != frames) {
         snprintf(err, err_size, "writing the WAV: %s", sf_strerror(w->wav));
         return FG_ERR_IO;
     }
@@ -85,16 +99,80 @@ static fg_result write_block(void *context, float *const *planes, uint32_t frame
 typedef struct render_result {
     uint64_t frames;
     float peak;
+    float scale;
 } render_result;
+
+/* --normalize: the peak of a pass that renders without writing, at the
+ * scene's gain. The engine is deterministic: the written pass repeats
+ * these samples exactly, scaled. */
+static int measure_peak(const scene *s, double *peak, char *err, size_t err_size)
+{
+    wav_sink w = {.s = s, .scale = (float)s->gain};
+    w.interleaved = malloc((size_t)s->block_frames * s->channels * sizeof(float));
+    if (!w.interleaved) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    scene_render_sink sink = {write_block, &w};
+    int rc = scene_render(s, &sink, NULL, err, err_size) == FG_OK ? 0 : -1;
+    free(w.interleaved);
+    *peak = w.peak;
+    return rc;
+}
+
+/* The scale of the written samples: the scene's gain, times --gain-db, or
+ * what brings the peak to --normalize. Returns -1 with a message. */
+static int level_scale(const scene *s, const render_level *level, float *scale, char *err,
+                       size_t err_size)
+{
+    double gain = s->gain;
+    if (!isnan(level->gain_db))
+        gain *= pow(10, level->gain_db / 20);
+    if (!isnan(level->normalize_dbfs)) {
+        double peak;
+        if (measure_peak(s, &peak, err, err_size) != 0)
+            return -1;
+        if (!(peak > 0)) {
+            snprintf(err, err_size, "--normalize: the scene is silent (peak 0): nothing to scale");
+            return -1;
+        }
+        gain *= pow(10, level->normalize_dbfs / 20) / peak;
+    }
+    *scale = (float)gain;
+    if (!(*scale > 0) || !isfinite(*scale)) {
+        snprintf(err, err_size, "the level gives a scale of %g, outside a 32-bit float", gain);
+        return -1;
+    }
+    return 0;
+}
+
+/* A file at a level other than pascals says which (common/calibration.h);
+ * one in pascals stays byte for byte what it always was. */
+static SNDFILE *open_wav(const temp_file *out, const scene *s, float scale, char *err,
+                         size_t err_size)
+{
+    SNDFILE *wav = audio_wav_open(out->fd, out->path, s->sample_rate_hz, s->channels, err,
+                                  err_size);
+    if (wav && scale != 1.0f && calibration_write(wav, 1.0 / scale, err, err_size) != 0) {
+        sf_close(wav);
+        return NULL;
+    }
+    return wav;
+}
 
 /* Renders s into out_path (complete, or no file), updating line. The
  * summary line goes to `summary` (NULL: none). */
-static int render_file(const scene *s, const char *out_path, FILE *summary, progress *line,
-                       render_result *result)
+static int render_file(const scene *s, const char *out_path, const render_level *level,
+                       FILE *summary, progress *line, render_result *result)
 {
     char err[512];
     uint64_t t0 = monotonic_now_ns();
     wav_sink w = {.s = s, .path = out_path, .line = line};
+    if (level_scale(s, level, &w.scale, err, sizeof err) != 0) {
+        progress_clear(line);
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_RUNTIME;
+    }
     w.interleaved = malloc((size_t)s->block_frames * s->channels * sizeof(float));
     temp_file out;
     if (!w.interleaved || temp_file_open(&out, out_path, err, sizeof err) != 0) {
@@ -105,7 +183,7 @@ static int render_file(const scene *s, const char *out_path, FILE *summary, prog
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
     }
-    w.wav = audio_wav_open(out.fd, out_path, s->sample_rate_hz, s->channels, err, sizeof err);
+    w.wav = open_wav(&out, s, w.scale, err, sizeof err);
     scene_render_sink sink = {write_block, &w};
     scene_render_report rep;
     int ok = w.wav && scene_render(s, &sink, &rep, err, sizeof err) == FG_OK;
@@ -128,14 +206,22 @@ static int render_file(const scene *s, const char *out_path, FILE *summary, prog
                 SCENE_MAX_DURATION_S);
     double wall = (double)(monotonic_now_ns() - t0) * 1e-9;
     double seconds = (double)rep.frames / s->sample_rate_hz;
+    double full_scale_pa = 1.0 / w.scale;
     if (summary)
         fprintf(summary,
                 "%s: %zu discharges, %zu segments, %.3f s of sound (%u ch, %.0f Hz) in %.3f s "
-                "wall, %llu late events (%llu late samples)\n",
+                "wall, %llu late events (%llu late samples); peak %+.1f dBFS, full scale = "
+                "%.6g Pa%s\n",
                 out_path, s->discharge_count, rep.segments, seconds, (unsigned)s->channels,
                 s->sample_rate_hz, wall, (unsigned long long)rep.engine.late_events,
-                (unsigned long long)rep.engine.late_samples);
-    *result = (render_result){rep.frames, w.peak};
+                (unsigned long long)rep.engine.late_samples, calibration_dbfs(w.peak),
+                full_scale_pa, w.scale == 1.0f ? " (pascals)" : " (in the WAV's comment)");
+    if (w.peak > 1.0f)
+        fprintf(stderr,
+                "fulgur: warning: %s peaks at %+.1f dBFS (%.4g Pa): a player clips it above "
+                "0 dBFS; --normalize -1 makes it listenable\n",
+                out_path, calibration_dbfs(w.peak), w.peak * full_scale_pa);
+    *result = (render_result){rep.frames, w.peak, w.scale};
     return CLI_OK;
 }
 
@@ -147,6 +233,7 @@ typedef struct render_args {
     const char *png;
     double png_time;
     option_size png_size; /* 0: not given (1280x720) */
+    render_level level;
     const char *manifest;
     bool quiet;
     set_list sets;
@@ -193,7 +280,7 @@ static int render_one(const render_args *a, size_t i, scene *s, char *const *wav
     }
     FILE *summary = a->quiet ? NULL : a->manifest && !strcmp(a->manifest, "-") ? stderr : stdout;
     render_result result = {0};
-    int rc = render_file(s, wavs[i], summary, line, &result);
+    int rc = render_file(s, wavs[i], &a->level, summary, line, &result);
 #ifdef FULGUR_HAVE_GPU
     bool sized = a->png_size.width != 0;
     if (rc == CLI_OK && pngs &&
@@ -206,7 +293,7 @@ static int render_one(const render_args *a, size_t i, scene *s, char *const *wav
     (void)pngs;
 #endif
     manifest_row row = {a->scenes[i], a->sets.items, a->sets.count, wavs[i], s, result.frames,
-                        result.peak};
+                        result.peak, result.scale};
     if (rc == CLI_OK && manifest && manifest_write(manifest, &row) != 0) {
         fprintf(stderr, "fulgur: writing the manifest failed\n");
         rc = CLI_RUNTIME;
@@ -294,6 +381,13 @@ static int parse_args(int argc, char **argv, render_args *a)
          .range = {.lo = -INFINITY, .hi = INFINITY}},
         {"--size", OPTION_PARSED, &a->png_size, "WxH",
          .help = "the picture in pixels (default 1280x720)", .parse = option_parse_size},
+        {"--gain-db", OPTION_NUMBER, &a->level.gain_db, "DB",
+         .help = "multiply the samples by 10^(DB/20) (default 0: pascals)",
+         .range = {.lo = -200, .hi = 200}},
+        {"--normalize", OPTION_NUMBER, &a->level.normalize_dbfs, "PEAK_DBFS",
+         .help = "scale the samples so that the peak is PEAK_DBFS, e.g. -1\n"
+                 "(renders twice: once to find the peak)",
+         .range = {.lo = -100, .hi = 0}},
         {0},
     };
     const command_line cl = {"fulgur render", "SCENE.json...", 1, (size_t)argc, about, notes,
@@ -301,6 +395,8 @@ static int parse_args(int argc, char **argv, render_args *a)
     options_result parsed = options_parse(&cl, argc, argv, a->scenes, &a->scene_count);
     if (parsed == OPTIONS_OK && (!isnan(a->png_time) || a->png_size.width) && !a->png)
         parsed = options_fail(&cl, "%s needs --png", a->png_size.width ? "--size" : "--png-time");
+    if (parsed == OPTIONS_OK && !isnan(a->level.gain_db) && !isnan(a->level.normalize_dbfs))
+        parsed = options_fail(&cl, "--gain-db and --normalize both set the level: give one");
 #ifndef FULGUR_HAVE_GPU
     if (parsed == OPTIONS_OK && a->png)
         parsed = options_fail(&cl, "--png needs the picture, and this fulgur was built without "
@@ -313,7 +409,8 @@ static int parse_args(int argc, char **argv, render_args *a)
 
 int render_main(int argc, char **argv)
 {
-    render_args a = {.png_time = NAN}; /* NAN: not given (the parser takes finite numbers only) */
+    /* NAN: not given (the parser takes finite numbers only) */
+    render_args a = {.png_time = NAN, .level = {NAN, NAN}};
     a.scenes = calloc((size_t)argc, sizeof *a.scenes);
     scene *scenes = calloc((size_t)argc, sizeof *scenes);
     char **wavs = calloc((size_t)argc, sizeof *wavs), **pngs = calloc((size_t)argc, sizeof *pngs);

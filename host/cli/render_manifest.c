@@ -22,7 +22,7 @@ int manifest_write(FILE *to, const manifest_row *row)
          cJSON_AddNumberToObject(o, "duration_s", (double)row->frames / s->sample_rate_hz) &&
          cJSON_AddNumberToObject(o, "peak", row->peak) &&
          cJSON_AddNumberToObject(o, "gain", s->gain) &&
-         cJSON_AddNumberToObject(o, "pa_per_unit", 1.0 / s->gain);
+         cJSON_AddNumberToObject(o, "pa_per_unit", 1.0 / row->scale);
     char *line = ok ? cJSON_PrintUnformatted(o) : NULL;
     cJSON_Delete(o);
     if (!line)

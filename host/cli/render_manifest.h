@@ -8,7 +8,7 @@
  *
  * scene and set as given on the command line; seed the scene's; duration_s
  * = frames / sample_rate; peak the largest |sample| in the file; gain the
- * scene's, and pa_per_unit = 1 / gain the calibration that turns the file's
+ * scene's, and pa_per_unit = 1 / scale the calibration that turns the file's
  * samples back into pascals. Nothing that varies between equal renders
  * (no wall time), so equal renders give equal lines. [main-thread] */
 #ifndef HOST_CLI_RENDER_MANIFEST_H
@@ -28,6 +28,7 @@ typedef struct manifest_row {
     const scene *s;
     uint64_t frames;
     float peak;
+    float scale; /* a sample = pascals x scale (the gain and --gain-db/--normalize) */
 } manifest_row;
 
 /* Writes the row's line to `to`. Returns 0, or -1 (out of memory or a

@@ -1,19 +1,21 @@
 /* A small lilv host for fulgur.lv2: see lilv_host.h. */
-#define _POSIX_C_SOURCE 200809L /* strdup */
+#define _POSIX_C_SOURCE 200809L /* strdup, getcwd */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <lv2/atom/util.h>
 #include <lv2/midi/midi.h>
+#include <lv2/presets/presets.h>
 #include <lv2/state/state.h>
 #include <lv2/urid/urid.h>
 #include <lv2/worker/worker.h>
 
 #include "lilv_host.h"
 
-#define PLUGIN_URI "urn:fulgur:lv2:instrument"
 #define MAX_PORTS 32
 #define MAX_URIDS 64
 #define MAX_JOBS 64
@@ -34,8 +36,8 @@ struct lv2_host {
     uint32_t port_count;
     float controls[MAX_PORTS];
     uint32_t audio_ports[2];
-    union {
-        LV2_Atom_Sequence seq;
+    union { /* LV2 atoms in a sequence are 64-bit aligned */
+        _Alignas(8) LV2_Atom_Sequence seq;
         unsigned char bytes[MIDI_BYTES];
     } midi;
     LV2_URID_Map map;
@@ -138,6 +140,48 @@ static void connect_ports(lv2_host *h)
     lv2_atom_sequence_clear(&h->midi.seq);
 }
 
+/* LV2_PATH for lilv, its relative entries made absolute: lilv 0.24 takes
+ * "dir/x.lv2" for a URI and crashes in lilv_world_load_bundle. Entries that
+ * are absolute or start with ~ (lilv expands it) are kept. Returns 0, or -1
+ * when out of memory or the working directory is unknown. */
+static int set_lv2_path(LilvWorld *world)
+{
+    const char *path = getenv("LV2_PATH");
+    if (!path)
+        return 0;
+    char cwd[PATH_MAX];
+    if (!getcwd(cwd, sizeof cwd))
+        return -1;
+    size_t entries = 1;
+    for (const char *c = path; *c; c++)
+        entries += *c == ':';
+    char *out = malloc(strlen(path) + entries * (strlen(cwd) + 1) + 1);
+    if (!out)
+        return -1;
+    char *end = out;
+    for (const char *entry = path; entry;) {
+        const char *colon = strchr(entry, ':');
+        size_t n = colon ? (size_t)(colon - entry) : strlen(entry);
+        if (n > 0) {
+            if (end != out)
+                *end++ = ':';
+            if (entry[0] != '/' && entry[0] != '~')
+                end += sprintf(end, "%s/", cwd);
+            memcpy(end, entry, n);
+            end += n;
+        }
+        entry = colon ? colon + 1 : NULL;
+    }
+    *end = '\0';
+    LilvNode *node = lilv_new_string(world, out);
+    free(out);
+    if (!node)
+        return -1;
+    lilv_world_set_option(world, LILV_OPTION_LV2_PATH, node);
+    lilv_node_free(node);
+    return 0;
+}
+
 lv2_host *lv2_host_create(double rate_hz)
 {
     lv2_host *h = calloc(1, sizeof *h);
@@ -146,12 +190,17 @@ lv2_host *lv2_host_create(double rate_hz)
         free(h);
         return NULL;
     }
-    lilv_world_load_all(h->world);   /* reads LV2_PATH */
-    LilvNode *uri = lilv_new_uri(h->world, PLUGIN_URI);
+    if (set_lv2_path(h->world) != 0) {
+        fprintf(stderr, "lv2_host: out of memory or no working directory for LV2_PATH\n");
+        lv2_host_destroy(h);
+        return NULL;
+    }
+    lilv_world_load_all(h->world);
+    LilvNode *uri = lilv_new_uri(h->world, FULGUR_LV2_URI);
     h->plugin = lilv_plugins_get_by_uri(lilv_world_get_all_plugins(h->world), uri);
     lilv_node_free(uri);
     if (!h->plugin) {
-        fprintf(stderr, "lv2_host: %s not found on LV2_PATH=%s\n", PLUGIN_URI,
+        fprintf(stderr, "lv2_host: %s not found on LV2_PATH=%s\n", FULGUR_LV2_URI,
                 getenv("LV2_PATH") ? getenv("LV2_PATH") : "(unset)");
         lv2_host_destroy(h);
         return NULL;
@@ -285,4 +334,70 @@ LilvState *lv2_host_save(lv2_host *h)
 void lv2_host_restore(lv2_host *h, const LilvState *state)
 {
     lilv_state_restore(state, h->instance, set_port_value, h, 0, h->features);
+}
+
+/* Calls each(h, preset node, its label, user) for every preset of the
+ * plugin (loading each), until each returns non-zero; returns that, or 0. */
+static int for_each_preset(lv2_host *h,
+                           int (*each)(lv2_host *h, const LilvNode *preset, const char *label,
+                                       void *user),
+                           void *user)
+{
+    LilvNode *kind = lilv_new_uri(h->world, LV2_PRESETS__Preset);
+    LilvNode *rdfs_label = lilv_new_uri(h->world, LILV_NS_RDFS "label");
+    LilvNodes *all = lilv_plugin_get_related(h->plugin, kind);
+    int rc = 0;
+    LILV_FOREACH(nodes, it, all) {
+        const LilvNode *preset = lilv_nodes_get(all, it);
+        lilv_world_load_resource(h->world, preset);
+        LilvNode *text = lilv_world_get(h->world, preset, rdfs_label, NULL);
+        rc = each(h, preset, text ? lilv_node_as_string(text) : "", user);
+        lilv_node_free(text);
+        if (rc)
+            break;
+    }
+    lilv_nodes_free(all);
+    lilv_node_free(rdfs_label);
+    lilv_node_free(kind);
+    return rc;
+}
+
+typedef struct label_list {
+    char (*labels)[LV2_HOST_LABEL_BYTES];
+    unsigned max, count;
+} label_list;
+
+static int note_label(lv2_host *h, const LilvNode *preset, const char *label, void *user)
+{
+    (void)h, (void)preset;
+    label_list *l = user;
+    if (l->count < l->max)
+        snprintf(l->labels[l->count], LV2_HOST_LABEL_BYTES, "%s", label);
+    l->count++;
+    return 0;
+}
+
+unsigned lv2_host_presets(lv2_host *h, char (*labels)[LV2_HOST_LABEL_BYTES], unsigned max)
+{
+    label_list l = {labels, max, 0};
+    for_each_preset(h, note_label, &l);
+    return l.count;
+}
+
+/* Applies the preset if its label is the one wanted: 1 done, -1 failed. */
+static int apply_if_named(lv2_host *h, const LilvNode *preset, const char *label, void *user)
+{
+    if (strcmp(label, user) != 0)
+        return 0;
+    LilvState *state = lilv_state_new_from_world(h->world, &h->map, preset);
+    if (!state)
+        return -1;
+    lv2_host_restore(h, state);
+    lilv_state_free(state);
+    return 1;
+}
+
+int lv2_host_preset_apply(lv2_host *h, const char *label)
+{
+    return for_each_preset(h, apply_if_named, (void *)label) == 1 ? 0 : -1;
 }

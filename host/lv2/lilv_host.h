@@ -11,6 +11,7 @@
 #ifndef HOST_LV2_LILV_HOST_H
 #define HOST_LV2_LILV_HOST_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include <lilv/lilv.h>
@@ -42,6 +43,17 @@ unsigned lv2_host_work(lv2_host *host);
 /* Totals so far: work() calls, and responses handed to the plugin. */
 unsigned lv2_host_work_calls(const lv2_host *host);
 unsigned lv2_host_responses(const lv2_host *host);
+
+/* The presets the world knows for the plugin (pset:Preset with
+ * lv2:appliesTo it): up to max of their labels (rdfs:label, cut to
+ * LV2_HOST_LABEL_BYTES) into labels, in no particular order. Returns how
+ * many there are. [main-thread] */
+#define LV2_HOST_LABEL_BYTES 64
+unsigned lv2_host_presets(lv2_host *host, char (*labels)[LV2_HOST_LABEL_BYTES], unsigned max);
+/* Loads the preset labelled label through liblilv and applies its control
+ * values. Returns 0, or -1 when there is none or it cannot be read.
+ * [main-thread] */
+int lv2_host_preset_apply(lv2_host *host, const char *label);
 
 /* A snapshot of the instance (its state and control values), and its
  * restoration into another instance; the caller frees with lilv_state_free. */

@@ -34,6 +34,8 @@ static LV2_Handle instantiate(const LV2_Descriptor *descriptor, double rate_hz,
     LV2_Worker_Schedule *schedule = NULL;
     LV2_Log_Log *log = NULL;
     for (size_t i = 0; features && features[i]; i++) {
+        if (!features[i]->URI) /* some hosts pass one (lv2file) */
+            continue;
         if (!strcmp(features[i]->URI, LV2_URID__map))
             map = features[i]->data;
         else if (!strcmp(features[i]->URI, LV2_WORKER__schedule))
@@ -140,7 +142,7 @@ static void run(LV2_Handle instance, uint32_t frames)
     note_controls c;
     read_controls(p, &c);
     read_midi(p, &c);
-    float gain = (float)pow(10, control(p, PORT_GAIN, -80, 20) / 20);
+    float gain = (float)pow(10, control(p, PORT_GAIN, -100, 20) / 20);
     float *out[2] = {p->ports[PORT_OUT_LEFT], p->ports[PORT_OUT_RIGHT]};
     for (uint32_t done = 0; done < frames;) {
         uint32_t n = frames - done < p->max_block_frames ? frames - done : p->max_block_frames;
@@ -162,6 +164,8 @@ static void run(LV2_Handle instance, uint32_t frames)
 static const void *extension_data(const char *uri)
 {
     static const LV2_Worker_Interface worker = {plugin_work, plugin_work_response, NULL};
+    if (!uri)
+        return NULL;
     if (!strcmp(uri, LV2_WORKER__interface))
         return &worker;
     if (!strcmp(uri, LV2_STATE__interface))

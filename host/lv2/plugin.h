@@ -23,10 +23,14 @@
 
 #include "fulgur/fulgur.h"
 
-#define FULGUR_LV2_URI "urn:fulgur:lv2:instrument"
+/* FULGUR_LV2_URI, the plugin's URI, comes from host/lv2/CMakeLists.txt,
+ * which writes it into the Turtle too. */
+#ifndef FULGUR_LV2_URI
+#error "FULGUR_LV2_URI is defined by host/lv2/CMakeLists.txt"
+#endif
 /* State property: how many discharges this instance has triggered, the
  * position in its seed stream. */
-#define FULGUR_LV2_COUNTER_URI "urn:fulgur:lv2:discharge-count"
+#define FULGUR_LV2_COUNTER_URI FULGUR_LV2_URI "#discharge-count"
 
 /* Port indices, as in fulgur.ttl. */
 typedef enum port_index {

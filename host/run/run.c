@@ -6,14 +6,44 @@
 #include "common/commands.h"
 #include "run_gate.h"
 
+/* --audio jack or portaudio: connects to the device, whose rate (JACK: the
+ * server's) the engine then runs at. Returns 0, or -1 with a message and
+ * *rc the exit code (CLI_USAGE when there is no server or device). */
+static int open_live(run_ctx *run, int *rc, char *err, size_t err_size)
+{
+    const audio_output *out = &run->opt.audio;
+    live_config lc = {.kind = out->kind == AUDIO_DRIVER_JACK ? LIVE_JACK : LIVE_PORTAUDIO,
+                      .target = out->wav_path, .client_name = "fulgur",
+                      .channels = run->s->channels, .rate_hz = run->rate_hz,
+                      .block_frames = run->block_frames, .max_chunk_frames = run->block_frames,
+                      .process = run_live_process, .user = run};
+    live_result r = live_audio_open(&lc, &run->live, err, err_size);
+    if (r != LIVE_OK) {
+        *rc = r == LIVE_ABSENT ? CLI_USAGE : CLI_RUNTIME;
+        return -1;
+    }
+    double rate = live_audio_rate_hz(run->live);
+    if (run->opt.rate_hz && rate != run->opt.rate_hz) {
+        snprintf(err, err_size, "--rate %u: %s runs at %.0f Hz", (unsigned)run->opt.rate_hz,
+                 live_audio_describe(run->live), rate);
+        *rc = CLI_USAGE;
+        return -1;
+    }
+    run->rate_hz = rate;
+    return 0;
+}
+
 /* Allocates what the threads use; the engine last. */
-static int set_up(run_ctx *run, char *err, size_t err_size)
+static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
 {
     const scene *s = run->s;
     size_t n = s->discharge_count ? s->discharge_count : 1;
-    run->paced = run->opt.audio.kind == AUDIO_DRIVER_NULL;
+    run->paced = run->opt.audio.kind == AUDIO_DRIVER_NULL || audio_output_is_live(&run->opt.audio);
     run->block_frames = run->opt.block_frames ? run->opt.block_frames : s->block_frames;
     run->rate_hz = run->opt.rate_hz ? run->opt.rate_hz : s->sample_rate_hz;
+    *rc = CLI_RUNTIME;
+    if (audio_output_is_live(&run->opt.audio) && open_live(run, rc, err, err_size) != 0)
+        return -1;
     double seconds = run->opt.seconds ? run->opt.seconds : s->duration_s;
     run->until_done = seconds == 0;
     run->limit_frames = (uint64_t)llround((seconds ? seconds : SCENE_MAX_DURATION_S) * run->rate_hz);
@@ -54,6 +84,8 @@ static int set_up(run_ctx *run, char *err, size_t err_size)
 
 static void tear_down(run_ctx *run)
 {
+    live_audio_close(run->live); /* no callback after this */
+    run->live = NULL;
     fg_engine_destroy(run->engine);
     run_gate_deinit(&run->gate);
     free(run->order);
@@ -69,25 +101,50 @@ static void tear_down(run_ctx *run)
     run_hist_deinit(&run->jitter);
 }
 
-/* Starts the three threads and joins them. Returns -1 with a message when
- * one could not start (the others are stopped and joined). */
-static int run_threads(run_ctx *run, char *err, size_t err_size)
+/* A live device plays the audio thread's part: started after the frame
+ * and sim threads, it runs until its callback or the sim thread stops the
+ * run (or the server goes away), then it is closed before they are joined. */
+static int run_live(run_ctx *run, char *err, size_t err_size)
 {
-    void *(*const bodies[3])(void *) = {run_frame_thread, run_sim_thread, run_audio_thread};
-    pthread_t threads[3];
-    int started = 0;
-    run->start_ns = monotonic_now_ns();
-    while (started < 3 && pthread_create(&threads[started], NULL, bodies[started], run) == 0)
-        started++;
-    if (started < 3)
-        run_stop(run);
-    for (int i = 0; i < started; i++)
-        pthread_join(threads[i], NULL);
-    if (started < 3) {
-        snprintf(err, err_size, "cannot start the threads");
+    if (live_audio_start(run->live, err, err_size) != 0)
+        return -1;
+    while (!run_stopping(run) && !live_audio_lost(run->live))
+        monotonic_sleep_until_ns(monotonic_now_ns() + 10000000);
+    int lost = live_audio_lost(run->live) && !run_stopping(run);
+    run->live_xruns = live_audio_xruns(run->live);
+    live_audio_close(run->live); /* the callbacks end here */
+    run->live = NULL;
+    if (lost) {
+        snprintf(err, err_size, "the sound server went away (at frame %llu)",
+                 (unsigned long long)run->frames_out);
         return -1;
     }
     return 0;
+}
+
+/* Starts the three threads (two and the live device) and joins them.
+ * Returns -1 with a message when one could not start (the others are
+ * stopped and joined) or the live device failed. */
+static int run_threads(run_ctx *run, char *err, size_t err_size)
+{
+    void *(*const bodies[3])(void *) = {run_frame_thread, run_sim_thread, run_audio_thread};
+    bool live = run->live != NULL;
+    int wanted = live ? 2 : 3;
+    pthread_t threads[3];
+    int started = 0;
+    run->start_ns = monotonic_now_ns();
+    while (started < wanted && pthread_create(&threads[started], NULL, bodies[started], run) == 0)
+        started++;
+    int live_failed = started == wanted && live && run_live(run, err, err_size) != 0;
+    if (started < wanted || live || live_failed)
+        run_stop(run);
+    for (int i = 0; i < started; i++)
+        pthread_join(threads[i], NULL);
+    if (started < wanted) {
+        snprintf(err, err_size, "cannot start the threads");
+        return -1;
+    }
+    return live_failed ? -1 : 0;
 }
 
 static int write_report(const run_ctx *run, double wall_s, char *err, size_t err_size)
@@ -114,14 +171,18 @@ static int write_report(const run_ctx *run, double wall_s, char *err, size_t err
 static int run_scene(run_ctx *run)
 {
     char err[512] = "";
-    int ok = set_up(run, err, sizeof err) == 0 &&
+    int rc = CLI_RUNTIME;
+    int ok = set_up(run, &rc, err, sizeof err) == 0 &&
              audio_driver_start(&run->driver, &run->opt.audio, run->rate_hz, run->s->channels,
                                 run->block_frames, (float)run->s->gain, err, sizeof err) == 0;
     if (!ok) {
         tear_down(run);
         fprintf(stderr, "fulgur: %s\n", err);
-        return CLI_RUNTIME;
+        return rc;
     }
+    if (run->live)
+        snprintf(run->live_description, sizeof run->live_description, "%s",
+                 live_audio_describe(run->live));
     uint64_t t0 = monotonic_now_ns();
     ok = run_threads(run, err, sizeof err) == 0;
     double wall_s = (double)(monotonic_now_ns() - t0) * 1e-9;

@@ -11,6 +11,8 @@
  *              one block period apart, like a sound card; the frame thread
  *              to its own 90 Hz deadlines; the sim thread polls the engine
  *              clock every RUN_SIM_POLL_NS. Timing is real, output varies.
+ *              A live device (--audio jack, portaudio) is paced by its own
+ *              clock: its callback takes the audio thread's place.
  *   lock-step  (wav, raw) as fast as possible and deterministic: before
  *              each block the audio thread waits until the sim thread has
  *              posted everything due at the engine clock and the frame
@@ -30,6 +32,7 @@
 #include <stdio.h>
 
 #include "common/audio_driver.h"
+#include "common/live_audio.h"
 #include "common/options.h"
 #include "run_hist.h"
 #include "scene/scene.h"
@@ -94,8 +97,11 @@ typedef struct run_ctx {
     char sim_error[512];      /* a build or post error ends the run */
     bool sim_error_in_scene;  /* ... and it was the scene's fault (a generator's) */
 
-    /* audio thread's */
+    /* audio thread's (or the live device's callback's) */
     audio_driver driver;
+    live_audio *live;         /* --audio jack or portaudio: NULL otherwise */
+    char live_description[160]; /* what it was, for the report */
+    uint64_t live_xruns;      /* the device's over- and underruns, once closed */
     float *planes[2];
     uint64_t adopted;         /* voices seen adopted */
     uint64_t *adopt_frame;    /* block start, by post order */
@@ -119,6 +125,9 @@ options_result run_parse_options(int argc, char **argv, run_options *o);
 void *run_frame_thread(void *arg);
 void *run_sim_thread(void *arg);
 void *run_audio_thread(void *arg);
+/* The live device's callback: what run_audio_thread does for one block,
+ * then zeros once the run is over. [audio-thread] */
+void run_live_process(void *user, float *const *planes, uint32_t frames);
 
 /* The report as JSON text (caller frees), NULL when out of memory. */
 char *run_report_json(const run_ctx *run, double wall_s);

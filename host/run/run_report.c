@@ -118,6 +118,11 @@ char *run_report_json(const run_ctx *run, double wall_s)
     fg_engine_get_report(run->engine, &st);
     cJSON_AddStringToObject(root, "scene", run->opt.scene_path);
     cJSON_AddStringToObject(root, "audio", audio_driver_name(run->opt.audio.kind));
+    if (run->live_description[0]) {
+        cJSON *live = cJSON_AddObjectToObject(root, "live");
+        cJSON_AddStringToObject(live, "device", run->live_description);
+        cJSON_AddNumberToObject(live, "xruns", (double)run->live_xruns);
+    }
     cJSON_AddBoolToObject(root, "paced", run->paced);
     cJSON_AddNumberToObject(root, "sample_rate_hz", run->rate_hz);
     cJSON_AddNumberToObject(root, "block_frames", run->block_frames);

@@ -173,6 +173,10 @@ static int view_scene(view *v)
         snprintf(err, sizeof err, "--gl window: this build has no GLFW input");
         goto done;
     }
+    if (view_open_live(v, &v->rate_hz, &rc, err, sizeof err) != 0)
+        goto done;
+    rc = CLI_RUNTIME;
+    cfg.sample_rate_hz = v->rate_hz;
     if (fg_engine_create(&cfg, &v->engine) != FG_OK) {
         snprintf(err, sizeof err, "cannot create the engine");
         goto done;
@@ -191,16 +195,23 @@ static int view_scene(view *v)
     if (audio_driver_start(&v->driver, &v->opt.audio, v->rate_hz, v->s->channels,
                            v->block_frames, (float)v->s->gain, err, sizeof err))
         goto done;
+    /* a live device's callback takes the audio thread's place */
+    bool live = v->live != NULL;
     started = pthread_create(&sim, NULL, view_sim_thread, v) == 0;
-    started += started && pthread_create(&audio, NULL, view_audio_thread, v) == 0;
+    if (started && v->live)
+        started += live_audio_start(v->live, err, sizeof err) == 0;
+    else
+        started += started && pthread_create(&audio, NULL, view_audio_thread, v) == 0;
     if (started == 2)
         rc = loop(v, ctx, pic, err, sizeof err);
-    else
+    else if (!err[0])
         snprintf(err, sizeof err, "cannot start the threads");
     view_stop(v);
+    live_audio_close(v->live); /* no callback after this */
+    v->live = NULL;
     if (started >= 1)
         pthread_join(sim, NULL);
-    if (started == 2)
+    if (started == 2 && !live)
         pthread_join(audio, NULL);
     take_replies(v, pic); /* answers the loop did not take: free them */
     for (view_request *q; (q = view_ring_pop(&v->to_sim));)
@@ -221,6 +232,7 @@ static int view_scene(view *v)
     if (rc == CLI_OK)
         report(v, v->frames_drawn);
 done:
+    live_audio_close(v->live);
     fg_engine_destroy(v->engine);
     free(v->planes[0]);
     free(v->planes[1]);

@@ -39,6 +39,7 @@
 #include <stdint.h>
 
 #include "common/audio_driver.h"
+#include "common/live_audio.h"
 #include "common/options.h"
 #include "fulgur/gpu.h"
 #include "scene/scene.h"
@@ -164,6 +165,7 @@ typedef struct view {
     _Atomic uint64_t audio_done; /* frames rendered */
     atomic_bool stop;
     audio_driver driver;
+    live_audio *live;        /* window with a live device: its callback renders */
     float *planes[2];
     char audio_error[512];
     fg_result render_result;
@@ -241,5 +243,16 @@ void view_wait_audio(view *v);
 
 void *view_sim_thread(void *arg);
 void *view_audio_thread(void *arg);
+/* The live device's callback: one block into the device's planes, zeros
+ * once stopping. [audio-thread] */
+void view_live_process(void *user, float *const *planes, uint32_t frames);
+
+/* --audio jack, portaudio or auto (the default) in a window: opens the
+ * device (auto: a running JACK server, else PortAudio's default output,
+ * else none, which it says on stderr), setting *rate_hz to its rate.
+ * Headless runs lock-step and takes no live device: auto is null there, and
+ * jack or portaudio are refused. Returns 0, or -1 with a message and *rc
+ * (CLI_USAGE when the device asked for is not there). [main-thread] */
+int view_open_live(view *v, double *rate_hz, int *rc, char *err, size_t err_size);
 
 #endif

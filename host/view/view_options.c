@@ -25,7 +25,7 @@ static int parse_backend(const char *text, void *backend, char *why, size_t why_
 
 options_result view_parse_options(int argc, char **argv, view_options *o)
 {
-    *o = (view_options){.backend = FGG_BACKEND_WINDOW, .audio = {AUDIO_DRIVER_NULL, NULL},
+    *o = (view_options){.backend = FGG_BACKEND_WINDOW, .audio = {AUDIO_DRIVER_AUTO, NULL},
                         .fps = 60, .size = {960, 540}};
     const option table[] = {
         {"--gl", OPTION_PARSED, &o->backend, "window|egl|osmesa",
@@ -33,8 +33,10 @@ options_result view_parse_options(int argc, char **argv, view_options *o)
                  "headless, lock-step, for --frames N frames, drawn at frame / fps\n"
                  "seconds",
          .parse = parse_backend},
-        audio_output_option(&o->audio, "as fulgur run: null (the default), a 32-bit float\n"
-                                       "WAV, or raw float32 on stdout"),
+        audio_output_option(&o->audio, "as fulgur run: null, a 32-bit float WAV, raw\n"
+                                       "float32 on stdout, or a live device. Default: in a\n"
+                                       "window, a running JACK server, else PortAudio's\n"
+                                       "default output, else none; headless, none"),
         {"--frames", OPTION_INTEGER, &o->frames, "N",
          .help = "frames to draw (default: until Esc; headless: required)",
          .range = {.lo = 1, .hi = 1e7}},

@@ -41,6 +41,10 @@
 #include "fulgur/result.h"
 #include "fulgur/tree.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Vacuum permittivity, F/m. */
 #define FG_EPSILON0 8.8541878128e-12
 
@@ -89,5 +93,9 @@ FG_API FG_NODISCARD fg_result fg_charges_config_resolve(const fg_charges_config 
  * forward, or max_nodes were used without reaching the target;
  * FG_ERR_NO_MEMORY. On any error out is left empty. */
 FG_API FG_NODISCARD fg_result fg_charges_grow(const fg_charges_config *config, fg_tree *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -34,6 +34,10 @@
 #ifndef FULGUR_DEFS_H
 #define FULGUR_DEFS_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #if defined(FULGUR_BUILDING_SHARED) && defined(__GNUC__)
 #define FG_API __attribute__((visibility("default")))
 #else
@@ -44,6 +48,10 @@
 #define FG_NODISCARD __attribute__((warn_unused_result))
 #else
 #define FG_NODISCARD
+#endif
+
+#ifdef __cplusplus
+}
 #endif
 
 #endif

@@ -21,6 +21,10 @@
 #include "fulgur/sound.h"
 #include "fulgur/tree.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct fg_engine fg_engine;
 
 /* Zero in any field means "the default" given in its comment. */
@@ -222,5 +226,9 @@ FG_API void fg_engine_get_report(const fg_engine *engine, fg_engine_report *out)
  * [any-thread] */
 FG_API uint64_t fg_engine_frames(const fg_engine *engine);
 FG_API double fg_engine_time_s(const fg_engine *engine);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -30,6 +30,10 @@
 #include "fulgur/defs.h"
 #include "fulgur/result.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define FG_FIELD_MIN_SIZE 9
 #define FG_FIELD_MAX_SIZE 257
 #define FG_FIELD_DEFAULT_SIZE 65
@@ -216,5 +220,9 @@ typedef struct fg_field_source {
 /* Fills *out with a source reading field, valid while the field lives and
  * is not being solved or reshaped. [sim-thread] */
 FG_API void fg_field_source_init(fg_field *field, fg_field_source *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,10 @@
 #include "fulgur/result.h"
 #include "fulgur/sound.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define FG_FIELD_SCENE_MAX_SHAPES 4
 
 /* What a discharge grows in: a field and how the leader grows in it. */
@@ -35,5 +39,9 @@ typedef struct fg_field_scene {
  * grown in a field) or a size outside 9..257. */
 FG_API FG_NODISCARD fg_result fg_field_scene_preset(fg_preset preset, int size,
                                                   fg_field_scene *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,5 +14,14 @@
 #include "fulgur/result.h"
 #include "fulgur/sound.h"
 #include "fulgur/tree.h"
+#include "fulgur/version.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -47,6 +47,10 @@
 #include "fulgur/result.h"
 #include "fulgur/tree.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define FG_GROWTH_MAX_CANDIDATES 64
 
 typedef struct fg_growth_config {
@@ -102,5 +106,9 @@ FG_API FG_NODISCARD fg_result fg_grow_matsuyama(const fg_field_source *source,
  * Errors: as fg_grow_matsuyama, with field for source. */
 FG_API FG_NODISCARD fg_result fg_grow_dbm(fg_field *field, const fg_growth_config *config,
                                           fg_tree *out, fg_growth_report *report);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -64,6 +64,10 @@
 #include "fulgur/result.h"
 #include "fulgur/tree.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Features of one design at most. */
 #define FG_THUNDER_MAX_FEATURES 16
 /* Skeleton points at most. */
@@ -150,5 +154,9 @@ FG_API FG_NODISCARD fg_result fg_lightning_config_resolve(const fg_lightning_con
  * *report untouched. */
 FG_API FG_NODISCARD fg_result fg_lightning_generate(const fg_lightning_config *config,
                                                     fg_tree *out, fg_lightning_report *report);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

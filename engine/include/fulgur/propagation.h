@@ -13,6 +13,10 @@
 #include "fulgur/defs.h"
 #include "fulgur/result.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum fg_absorption {
     FG_ABSORPTION_OFF = 0,
     /* ISO 9613-1 for the engine's air: each ear's signal passes through one
@@ -71,5 +75,9 @@ typedef struct fg_propagation_config {
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT. */
 FG_API FG_NODISCARD fg_result fg_propagation_config_resolve(const fg_propagation_config *in,
                                                             fg_propagation_config *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -4,6 +4,10 @@
 
 #include "fulgur/defs.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum fg_result {
     FG_OK = 0,
     FG_ERR_NULL = -1,          /* a required pointer argument was NULL */
@@ -28,5 +32,9 @@ typedef enum fg_result {
 /* A short English description of r, e.g. "tree is invalid". Never NULL; the
  * string is static. [any-thread] */
 FG_API const char *fg_result_str(fg_result r);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -15,6 +15,10 @@
 #include "fulgur/defs.h"
 #include "fulgur/result.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct fg_sound_config {
     double t0_s;          /* baseline N-wave half-duration T0, seconds */
     double r0_m;          /* baseline distance r0, metres */
@@ -62,5 +66,9 @@ FG_API FG_NODISCARD fg_result fg_preset_from_name(const char *name, fg_preset *o
  * [any-thread]
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT. */
 FG_API FG_NODISCARD fg_result fg_sound_config_check(const fg_sound_config *config);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,6 +14,10 @@
 #include "fulgur/defs.h"
 #include "fulgur/result.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Node flags. */
 enum {
     /* The node lies on the main channel (root -> the node that reached the
@@ -87,5 +91,9 @@ FG_API void fg_tree_clear(fg_tree *tree);
  * fg_tree_destroy. Callers may change flags in place. [sim-thread] */
 FG_API fg_node *fg_tree_nodes(fg_tree *tree);
 FG_API size_t fg_tree_count(const fg_tree *tree);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -6,4 +6,12 @@
 #include "fulgur/gpu_field.h"
 #include "fulgur/gpu_picture.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#ifdef __cplusplus
+}
+#endif
+
 #endif

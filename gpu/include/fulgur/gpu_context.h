@@ -19,6 +19,10 @@
 #include "fulgur/defs.h"
 #include "fulgur/result.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The GL version every backend must give: compute shaders and image load/store. */
 #define FGG_GL_MAJOR 4
 #define FGG_GL_MINOR 3
@@ -101,5 +105,9 @@ FG_API void fgg_context_framebuffer_size(const fgg_context *context, int *width,
 /* Window: the GLFWwindow pointer, for the host's input handling; headless:
  * NULL. Owned by the context. [gpu-thread] */
 FG_API void *fgg_context_native_window(fgg_context *context);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -27,6 +27,10 @@
 #include "fulgur/field.h"
 #include "fulgur/gpu_context.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct fgg_field fgg_field;
 
 typedef struct fgg_solve_config {
@@ -87,5 +91,9 @@ FG_API FG_NODISCARD fg_result fgg_field_read_potential(fgg_field *field, double 
  * the same shapes. Valid while both live and are not being updated.
  * [gpu-thread] */
 FG_API void fgg_field_source_init(fgg_field *field, fg_field *description, fg_field_source *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -41,6 +41,10 @@
 #include "fulgur/gpu_context.h"
 #include "fulgur/tree.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct fgg_picture fgg_picture;
 
 typedef struct fgg_picture_config {
@@ -265,5 +269,9 @@ FG_API FG_NODISCARD fg_result fgg_picture_write_png(fgg_picture *picture, const 
 
 /* The picture's size in pixels. [gpu-thread] */
 FG_API void fgg_picture_size(const fgg_picture *picture, int *width, int *height);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -29,9 +29,18 @@
  * The pointers are the process's, not the thread's: while an OSMesa context
  * is current on one thread, other threads must not call GL through epoxy.
  * A second thread's OSMesa context is refused; a second thread's EGL or
- * window context is not detected. */
+ * window context is not detected.
+ *
+ * Why libOSMesa is opened with dlopen. It links libLLVM: mapped into every
+ * process that links it, it cost each `fulgur` run 15 ms and 44 MiB before
+ * the first line of main. It is opened the first time an OSMesa context is
+ * asked for, and stays open (libLLVM does not unload cleanly); only
+ * <GL/osmesa.h>'s types are used at build time. */
+#include <dlfcn.h>
+#include <stdio.h>
 #include <stdatomic.h>
 #include <stdlib.h>
+#include <threads.h>
 
 #include <epoxy/gl.h>
 /* after epoxy, whose header stands in for the GL/gl.h that osmesa.h wants */
@@ -52,6 +61,39 @@ typedef void (*gl_proc)(void);
 #define COUNT_NAME(name) +1
 enum { GL_NAME_COUNT = 0 FGG_GL_NAMES(COUNT_NAME) };
 
+/* The library's name as Debian's libosmesa6 installs it. */
+#define OSMESA_LIBRARY "libOSMesa.so.8"
+
+/* The four OSMesa calls, resolved from the library once. */
+static struct {
+    __typeof__(OSMesaCreateContextAttribs) *create_context_attribs;
+    __typeof__(OSMesaMakeCurrent) *make_current;
+    __typeof__(OSMesaDestroyContext) *destroy_context;
+    __typeof__(OSMesaGetProcAddress) *get_proc_address;
+    char error[256]; /* why it could not be loaded; empty when it was */
+} osmesa;
+static once_flag osmesa_once = ONCE_FLAG_INIT;
+
+static void osmesa_load(void)
+{
+    void *lib = dlopen(OSMESA_LIBRARY, RTLD_NOW | RTLD_LOCAL);
+    if (!lib) {
+        snprintf(osmesa.error, sizeof osmesa.error, "%s", dlerror());
+        return;
+    }
+    /* POSIX converts dlsym's object pointer to a function pointer */
+#define RESOLVE(field, name)                                                      \
+    if (!(*(void **)&osmesa.field = dlsym(lib, #name))) {                         \
+        snprintf(osmesa.error, sizeof osmesa.error, "%s has no %s", OSMESA_LIBRARY, #name); \
+        return;                                                                   \
+    }
+    RESOLVE(create_context_attribs, OSMesaCreateContextAttribs)
+    RESOLVE(make_current, OSMesaMakeCurrent)
+    RESOLVE(destroy_context, OSMesaDestroyContext)
+    RESOLVE(get_proc_address, OSMesaGetProcAddress)
+#undef RESOLVE
+}
+
 static gl_proc kept[GL_NAME_COUNT];
 static atomic_int redirected; /* by some thread */
 static _Thread_local int redirected_here;
@@ -71,7 +113,7 @@ static fg_result redirect(void)
     /* name is the epoxy_ pointer, #name the GL name */
 #define REDIRECT(name)                                                   \
     kept[i] = (gl_proc)name;                                             \
-    if ((proc = (gl_proc)OSMesaGetProcAddress(#name)) != NULL)           \
+    if ((proc = (gl_proc)osmesa.get_proc_address(#name)) != NULL)           \
         name = (__typeof__(name))proc;                                   \
     i++;
     FGG_GL_NAMES(REDIRECT)
@@ -99,7 +141,7 @@ static OSMesaContext make_context(int profile, int major, int minor)
                               OSMESA_CONTEXT_MAJOR_VERSION, major,
                               OSMESA_CONTEXT_MINOR_VERSION, minor,
                               0};
-    return OSMesaCreateContextAttribs(attributes, NULL);
+    return osmesa.create_context_attribs(attributes, NULL);
 }
 
 /* The 4.3 core context was refused: find out what OSMesa does offer, for
@@ -111,8 +153,8 @@ static fg_result refused(void)
     unsigned char pixel[4];
     const char *version = NULL, *renderer = NULL;
     const GLubyte *(*get_string)(GLenum) =
-        (const GLubyte *(*)(GLenum))(gl_proc)OSMesaGetProcAddress("glGetString");
-    if (c && get_string && OSMesaMakeCurrent(c, pixel, GL_UNSIGNED_BYTE, 1, 1)) {
+        (const GLubyte *(*)(GLenum))(gl_proc)osmesa.get_proc_address("glGetString");
+    if (c && get_string && osmesa.make_current(c, pixel, GL_UNSIGNED_BYTE, 1, 1)) {
         version = (const char *)get_string(GL_VERSION);
         renderer = (const char *)get_string(GL_RENDERER);
     }
@@ -121,8 +163,8 @@ static fg_result refused(void)
                            FGG_GL_MAJOR, FGG_GL_MINOR, renderer ? renderer : "OSMesa",
                            version ? version : "no OpenGL context at all");
     if (c) {
-        OSMesaMakeCurrent(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0);
-        OSMesaDestroyContext(c);
+        osmesa.make_current(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0);
+        osmesa.destroy_context(c);
     }
     return r;
 }
@@ -133,7 +175,7 @@ static fg_result osmesa_make_current(fgg_context *ctx)
     fg_result r = redirect();
     if (r != FG_OK)
         return r;
-    if (!OSMesaMakeCurrent(s->context, s->pixel, GL_UNSIGNED_BYTE, 1, 1)) {
+    if (!osmesa.make_current(s->context, s->pixel, GL_UNSIGNED_BYTE, 1, 1)) {
         restore();
         return fgg_fail(FG_ERR_GPU, "OSMesa: OSMesaMakeCurrent failed");
     }
@@ -143,20 +185,24 @@ static fg_result osmesa_make_current(fgg_context *ctx)
 static fg_result osmesa_create(fgg_context *ctx, const fgg_context_config *config)
 {
     (void)config;
+    call_once(&osmesa_once, osmesa_load);
+    if (osmesa.error[0])
+        return fgg_fail(FG_ERR_UNSUPPORTED, "OSMesa: cannot load %s (Debian: libosmesa6): %s",
+                        OSMESA_LIBRARY, osmesa.error);
     ctx->platform = "OSMesa";
     OSMesaContext c = make_context(OSMESA_CORE_PROFILE, FGG_GL_MAJOR, FGG_GL_MINOR);
     if (!c)
         return refused();
     osmesa_state *s = calloc(1, sizeof *s);
     if (!s) {
-        OSMesaDestroyContext(c);
+        osmesa.destroy_context(c);
         return fgg_fail(FG_ERR_NO_MEMORY, "out of memory for an OSMesa context");
     }
     s->context = c;
     ctx->impl = s;
     fg_result r = osmesa_make_current(ctx);
     if (r != FG_OK) {
-        OSMesaDestroyContext(c);
+        osmesa.destroy_context(c);
         free(s);
         ctx->impl = NULL;
     }
@@ -167,13 +213,13 @@ static void osmesa_release(fgg_context *ctx)
 {
     (void)ctx;
     restore();
-    OSMesaMakeCurrent(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0);
+    osmesa.make_current(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0);
 }
 
 static void osmesa_destroy(fgg_context *ctx)
 {
     osmesa_state *s = ctx->impl;
-    OSMesaDestroyContext(s->context);
+    osmesa.destroy_context(s->context);
     free(s);
 }
 
