@@ -40,5 +40,5 @@ grep -q "warning: --png-time 0 s is before anything is lit: the first leader sta
     "$tmp/f.err" || { echo "no warning before the first leader: $(cat "$tmp/f.err")"; exit 1; }
 [ -s "$tmp/f.png" ] || { echo "no picture with the warning"; exit 1; }
 "$fulgur" render "$scene" -o "$tmp/g.wav" --png "$tmp/g.png" 2> "$tmp/g.err" > /dev/null || exit 1
-[ ! -s "$tmp/g.err" ] || { echo "a warning at the first return stroke: $(cat "$tmp/g.err")"; exit 1; }
+! grep -qv 'a player clips it' "$tmp/g.err" || { echo "a warning at the first return stroke: $(cat "$tmp/g.err")"; exit 1; }
 echo "PNG $(wc -c < "$tmp/a.png") bytes, identical over two runs"

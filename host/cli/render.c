@@ -91,7 +91,8 @@ static fg_result write_block(void *context, float *const *planes, uint32_t frame
         return FG_ERR_IO;
     }
     w->frames += frames;
-    progress_update(w->line, (double)w->frames / w->s->sample_rate_hz, monotonic_now_ns());
+    if (w->line) /* NULL: the --normalize pass */
+        progress_update(w->line, (double)w->frames / w->s->sample_rate_hz, monotonic_now_ns());
     return FG_OK;
 }
 
@@ -216,7 +217,7 @@ static int render_file(const scene *s, const char *out_path, const render_level 
                 s->sample_rate_hz, wall, (unsigned long long)rep.engine.late_events,
                 (unsigned long long)rep.engine.late_samples, calibration_dbfs(w.peak),
                 full_scale_pa, w.scale == 1.0f ? " (pascals)" : " (in the WAV's comment)");
-    if (w.peak > 1.0f)
+    if (summary && w.peak > 1.0f)
         fprintf(stderr,
                 "fulgur: warning: %s peaks at %+.1f dBFS (%.4g Pa): a player clips it above "
                 "0 dBFS; --normalize -1 makes it listenable\n",
@@ -372,7 +373,8 @@ static int parse_args(int argc, char **argv, render_args *a)
         {"--manifest", OPTION_TEXT, &a->manifest, "FILE",
          .help = "a JSON line per file written: scene, seed, duration, peak,\n"
                  "calibration (- : stdout, the summary lines then to stderr)"},
-        {"--quiet", OPTION_FLAG, &a->quiet, .help = "no summary line and no progress line"},
+        {"--quiet", OPTION_FLAG, &a->quiet,
+         .help = "no summary line, no progress line, no warning of clipping"},
         {"--png", OPTION_TEXT, &a->png, "OUT.png",
          .help = "also draw the discharges (docs/picture.md) from the scene's\n"
                  "\"camera\" into a PNG (needs gpu/: FULGUR_GPU); named as -o"},

@@ -46,7 +46,7 @@ size_t fg_tree_count(const fg_tree *tree);
 /* sound.h */
 typedef struct fg_sound_config {
     double t0_s; double r0_m; double ps0_pa; double sigma0; double t0_jitter;
-    double return_stroke_speed_m_s;
+    double return_stroke_speed_m_s; double ref_half_len_m;
 } fg_sound_config;
 typedef enum fg_preset {
     FG_PRESET_SPARK_BALLS = 0, FG_PRESET_PLASMA_BALL = 1, FG_PRESET_LIGHTNING = 2,
@@ -88,7 +88,7 @@ typedef struct fg_discharge {
 } fg_discharge;
 typedef uint64_t fg_voice_id;
 typedef struct fg_listener {
-    double position[3]; double forward[3]; double up[3]; double velocity[3];
+    double position[3]; double forward[3]; double up[3]; double velocity[3]; double time_s;
 } fg_listener;
 typedef struct fg_engine_report {
     uint64_t posted; uint64_t dropped_posts; uint64_t adopted; uint64_t finished;
@@ -164,12 +164,12 @@ typedef struct fg_shape {
 } fg_shape;
 fg_result fg_field_set_shapes(fg_field *field, const fg_shape *shapes, size_t count,
                               size_t *bad_shape);
-typedef enum fg_solver { FG_SOLVER_MGPCG = 0, FG_SOLVER_SOR } fg_solver;
+typedef enum fg_solver { FG_SOLVER_MULTIGRID = 0, FG_SOLVER_SOR } fg_solver;
 typedef struct fg_solve_config {
     fg_solver solver; double tolerance; int max_iterations; double sor_omega; int cold;
 } fg_solve_config;
 typedef struct fg_solve_report {
-    int iterations; double residual; double initial_residual;
+    int iterations; double residual; double initial_residual; int cg_iterations;
 } fg_solve_report;
 fg_result fg_field_solve(fg_field *field, const fg_solve_config *config,
                          fg_solve_report *report);

@@ -111,7 +111,7 @@ def grow(preset=None, *, size=0, grid=None, shapes=None, growth=None, method="ma
     (fg_growth_config fields) over it, and shapes (a list of fg_shape
     fields, kind and role by name) instead of its shapes when given; without
     a preset all three are needed. The field is solved (solve: fg_solve_config
-    fields, solver "mgpcg" or "sor") and grown by method "matsuyama" or
+    fields, solver "multigrid" or "sor") and grown by method "matsuyama" or
     "dbm"; seed sets growth's. report: nodes, main_nodes, steps (and DBM's
     solves), residual of the solve."""
     if method not in ("matsuyama", "dbm"):
@@ -133,7 +133,7 @@ def grow(preset=None, *, size=0, grid=None, shapes=None, growth=None, method="ma
         _convert.fill(ffi.addressof(shape_arr, i), sh, f"shapes[{i}]",
                       names={"kind": SHAPE_KINDS, "role": SHAPE_ROLES})
     solve_cfg = _convert.fill(ffi.new("fg_solve_config *"), solve, "solve",
-                              names={"solver": {"mgpcg": lib.FG_SOLVER_MGPCG,
+                              names={"solver": {"multigrid": lib.FG_SOLVER_MULTIGRID,
                                                 "sor": lib.FG_SOLVER_SOR}})
     out = ffi.new("fg_field **")
     check(lib.fg_field_create(grid_cfg, out), "grow: grid")

@@ -34,12 +34,13 @@ def test_post_render_collect_round_trip():
         first = int(np.argmax(np.abs(out[:, 0]) > 1e-6))
         # the N-wave (T about 56 us = 2.7 samples at 10 m) starts just before arrival
         assert arrival - 4 <= first <= arrival + 1
-        # eq. 3 (Matsuyama): the broadside N-wave's peak ps at r; each sample
-        # is the N-wave's average over its interval, so at most ps, and with
-        # T = 2.8 samples well above half of it
+        # eq. 3 (Matsuyama): the broadside N-wave's peak ps at r, scaled by
+        # the line integral (a half-length of 5 mm against the preset's l);
+        # each sample is the N-wave's average over its interval, so at most
+        # ps, and with T = 2.8 samples well above half of it
         p = fulgur.preset_sound("spark_balls")
         stretch = np.sqrt(1 + p["sigma0"] * np.log(r / p["r0_m"]))
-        ps = p["r0_m"] * p["ps0_pa"] / (r * stretch)
+        ps = p["r0_m"] * p["ps0_pa"] / (r * stretch) * 0.005 / p["ref_half_len_m"]
         assert 0.5 * ps <= np.abs(out).max() <= ps
         # the N-wave lasts 2T = 5.6 samples; then silence (the accumulator's
         # rounding leaves 1e-12 Pa at most)
