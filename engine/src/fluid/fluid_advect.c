@@ -1,11 +1,11 @@
 /* Semi-Lagrangian advection with the MacCormack correction.
  *
- * Each node is traced back along the flow at the start of the step (RK2,
- * midpoint rule): phi_hat = phi(x - d). The correction traces phi_hat
- * forward along the same displacement, phi_back = phi_hat(x + d), and adds
- * half the round-trip error: phi = phi_hat + (phi - phi_back) / 2. That
- * cancels the interpolation's leading error (second order in space and
- * time for smooth fields); where it would create a new extremum the result
+ * Each node is traced back along the carrier (RK2, midpoint rule): phi_hat
+ * = phi(x - d). The correction traces phi_hat forward from the node,
+ * phi_back = phi_hat(x + d'), and adds half the round-trip error: phi =
+ * phi_hat + (phi - phi_back) / 2. That cancels the interpolation's leading
+ * error (second order in space and time for smooth fields); where it
+ * would create a new extremum the result
  * is clamped to the values the back-trace interpolated from, which keeps
  * the scheme unconditionally stable (Selle, Fedkiw, Kim, Liu & Rossignac
  * 2008, "An unconditionally stable MacCormack method"). */
@@ -58,6 +58,7 @@ FG_FLUID_HOT void advect_passes(const fg_fluid *f, const carrier *k, const int m
                                 double *fwd, double *lo, double *hi, double *disp, double dt,
                                 int d)
 {
+    int mac = !f->config.semi_lagrangian;
     size_t id = 0;
     for (int z = 0; z < m[2]; z++)
         for (int y = 0; y < m[1]; y++)
@@ -69,11 +70,20 @@ FG_FLUID_HOT void advect_passes(const fg_fluid *f, const carrier *k, const int m
                 carry(k, d, gm, v2);
                 for (int b = 0; b < 3; b++)
                     gb[b] = g[b] - dt * v2[b];
-                for (int b = 0; b < d; b++)
-                    disp[id * (size_t)d + (size_t)b] = dt * v2[b];
+                if (mac) {
+                    /* the reverse trace, forward in time from the node: the
+                     * map that undoes the back-trace to O(dt^3) (reusing the
+                     * back-trace's displacement instead bends curved paths:
+                     * mass then grew 10 % in a turn of a rotating blob) */
+                    for (int b = 0; b < 3; b++)
+                        gm[b] = g[b] + 0.5 * dt * v1[b];
+                    carry(k, d, gm, v2);
+                    for (int b = 0; b < d; b++)
+                        disp[id * (size_t)d + (size_t)b] = dt * v2[b];
+                }
                 fwd[id] = fg_fluid_sample(from, d, gb, &lo[id], &hi[id]);
             }
-    if (f->config.semi_lagrangian) {
+    if (!mac) {
         memcpy(dst, fwd, id * sizeof(double));
         return;
     }
