@@ -296,6 +296,61 @@ static int sizes(options *o)
     return 0;
 }
 
+/* What fg_aero_config_check found, in the options' words. */
+static int explain(const fg_aero_check *w)
+{
+    char m[256];
+    static const char *names[] = {
+        [FG_AERO_FIELD_SHAPE] = "--shape",         [FG_AERO_FIELD_TONE] = "--tone",
+        [FG_AERO_FIELD_REFERENCE] = "--reference", [FG_AERO_FIELD_SPEED] = "--speed",
+        [FG_AERO_FIELD_VISCOSITY] = "--viscosity", [FG_AERO_FIELD_DENSITY] = "--density",
+        [FG_AERO_FIELD_CELLS] = "--grid",          [FG_AERO_FIELD_SECONDS] = "--seconds",
+        [FG_AERO_FIELD_TRANSIENT] = "--transient", [FG_AERO_FIELD_DIRECTIONS] = "--directions",
+        [FG_AERO_FIELD_STEP] = "--step",           [FG_AERO_FIELD_SOURCES] = "--sources",
+        [FG_AERO_FIELD_THREADS] = "--threads",     [FG_AERO_FIELD_DOMAIN] = "--domain",
+        [FG_AERO_FIELD_CFL] = "--cfl"};
+    switch (w->field) {
+    case FG_AERO_FIELD_SIZE:
+        snprintf(m, sizeof m, "the shape's size is out of range");
+        break;
+    case FG_AERO_FIELD_POLYGON:
+        switch (w->polygon) {
+        case FG_AERO_POLYGON_COUNT:
+            snprintf(m, sizeof m, "--polygon: %u vertices (3..%u)", w->index, FG_AERO_MAX_POLYGON);
+            break;
+        case FG_AERO_POLYGON_NOT_FINITE:
+            snprintf(m, sizeof m, "--polygon: vertex %u is not a finite number", w->index);
+            break;
+        case FG_AERO_POLYGON_REPEATED:
+            snprintf(m, sizeof m, "--polygon: vertex %u repeats the one before it", w->index);
+            break;
+        case FG_AERO_POLYGON_CROSSING:
+            snprintf(m, sizeof m, "--polygon: edges %u and %u cross or touch (edge i runs from "
+                                  "vertex i to vertex i + 1, counting from 0)", w->index, w->other);
+            break;
+        default:
+            snprintf(m, sizeof m, "--polygon: the vertices enclose no area");
+        }
+        break;
+    case FG_AERO_FIELD_RATE:
+        snprintf(m, sizeof m, "--rate: at least %.4g Hz for this size and speed (8 samples a "
+                              "shedding period at St 0.2), at most 1e7", w->limit);
+        break;
+    case FG_AERO_FIELD_MAX_TRANSIENT:
+        snprintf(m, sizeof m, "--max-transient must be at least --transient");
+        break;
+    case FG_AERO_FIELD_GRID:
+        snprintf(m, sizeof m, "the flow's box would have %.3g cells, more than 2^27: lower "
+                              "--grid or --domain", w->limit);
+        break;
+    default: {
+        const char *name = w->field < sizeof names / sizeof names[0] ? names[w->field] : NULL;
+        snprintf(m, sizeof m, "%s is out of range", name ? name : "a value");
+    }
+    }
+    return bad("%s", m);
+}
+
 static double now_s(void)
 {
     struct timespec t;
@@ -378,6 +433,9 @@ int aerotex_main(int argc, char **argv)
         return bad("%s", "--speed is required");
     if (!o.out)
         return bad("%s", "-o FILE is required");
+    fg_aero_check why;
+    if (fg_aero_config_check(&o.c, &why) != FG_OK)
+        return explain(&why);
     if (!o.c.threads) {
         long cpus = sysconf(_SC_NPROCESSORS_ONLN);
         o.c.threads = cpus > 0 && cpus < 64 ? (uint32_t)cpus : 1;
@@ -390,11 +448,11 @@ int aerotex_main(int argc, char **argv)
     if (ps.shown)
         fputc('\n', stderr);
     if (r != FG_OK) {
-        const char *why = r == FG_ERR_NOT_CONVERGED
+        const char *reason = r == FG_ERR_NOT_CONVERGED
                               ? "the flow did not settle into shedding (or blew up); try a "
                                 "longer --max-transient, a finer --grid or a smaller --cfl"
                               : fg_result_str(r);
-        fprintf(stderr, "fulgur aerotex: %s\n", why);
+        fprintf(stderr, "fulgur aerotex: %s\n", reason);
         return r == FG_ERR_NOT_CONVERGED || r == FG_ERR_NO_MEMORY ? CLI_RUNTIME : CLI_USAGE;
     }
     double cpu = (double)(clock() - cpu0) / CLOCKS_PER_SEC, wall = now_s() - ps.start;

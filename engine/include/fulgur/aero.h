@@ -189,6 +189,53 @@ typedef struct fg_aero_config {
     double cfl;               /* free-stream Courant number of the flow steps; 0: 0.5 */
 } fg_aero_config;
 
+/* What fg_aero_config_check found wrong: which field, and for a polygon
+ * which vertices; for a message that names it. */
+typedef enum fg_aero_field {
+    FG_AERO_FIELD_NONE = 0,
+    FG_AERO_FIELD_SHAPE,
+    FG_AERO_FIELD_TONE,
+    FG_AERO_FIELD_SIZE,          /* length_m, height_m or diameter_m for the shape */
+    FG_AERO_FIELD_POLYGON,       /* see fg_aero_check.polygon */
+    FG_AERO_FIELD_REFERENCE,
+    FG_AERO_FIELD_SPEED,
+    FG_AERO_FIELD_VISCOSITY,
+    FG_AERO_FIELD_DENSITY,
+    FG_AERO_FIELD_CELLS,         /* cells_per_length: 4..1024 */
+    FG_AERO_FIELD_RATE,          /* below limit: 8 samples a period at St 0.2, or above 1e7 */
+    FG_AERO_FIELD_SECONDS,
+    FG_AERO_FIELD_TRANSIENT,
+    FG_AERO_FIELD_MAX_TRANSIENT, /* below transient_s */
+    FG_AERO_FIELD_DIRECTIONS,    /* index: the direction */
+    FG_AERO_FIELD_STEP,          /* below 0.1 degree */
+    FG_AERO_FIELD_SOURCES,       /* above FG_AERO_MAX_SOURCES, or not a club */
+    FG_AERO_FIELD_THREADS,       /* above 64 */
+    FG_AERO_FIELD_DOMAIN,
+    FG_AERO_FIELD_CFL,           /* above 4 */
+    FG_AERO_FIELD_GRID           /* the box would have limit cells, above 2^27 */
+} fg_aero_field;
+
+typedef enum fg_aero_polygon_fault {
+    FG_AERO_POLYGON_OK = 0,
+    FG_AERO_POLYGON_COUNT,      /* fewer than 3 or more than FG_AERO_MAX_POLYGON vertices */
+    FG_AERO_POLYGON_NOT_FINITE, /* vertex index */
+    FG_AERO_POLYGON_REPEATED,   /* vertex index is vertex index - 1 (or the last) again */
+    FG_AERO_POLYGON_CROSSING,   /* edges index and other (from vertex i to i + 1) meet */
+    FG_AERO_POLYGON_NO_AREA     /* all on a line */
+} fg_aero_polygon_fault;
+
+typedef struct fg_aero_check {
+    fg_aero_field field;
+    fg_aero_polygon_fault polygon;
+    uint32_t index, other;
+    double limit;
+} fg_aero_check;
+
+/* Checks c as fg_aero_generate would, without computing anything, and
+ * says which field is wrong in *why (may be NULL). [any-thread]
+ * Errors: as fg_aero_generate's NULL, ARGUMENT and NOT_FINITE. */
+FG_API FG_NODISCARD fg_result fg_aero_config_check(const fg_aero_config *c, fg_aero_check *why);
+
 typedef enum fg_aero_phase {
     FG_AERO_TRANSIENT = 0, /* starting the flow, to be discarded */
     FG_AERO_RECORDING = 1, /* the loop's force being recorded */
@@ -220,10 +267,10 @@ typedef void (*fg_aero_progress_fn)(const fg_aero_progress *p, void *user);
  * tone; a length, diameter, speed, rate, duration or count out of range; a
  * polygon with fewer than 3 or more than FG_AERO_MAX_POLYGON vertices,
  * repeated vertices, crossing edges or no area; a club whose diameters
- * exceed its length; a grid above 2^27 cells; directions not finite),
- * NOT_FINITE (a NaN or infinite value), NOT_CONVERGED (the flow did not
- * settle into shedding by max_transient_s, or it blew up), NO_MEMORY.
- * *out is written only on success. */
+ * exceed its length; a grid above 2^27 cells: fg_aero_config_check says
+ * which), NOT_FINITE (a NaN or infinite value), NOT_CONVERGED (the flow
+ * did not settle into shedding by max_transient_s, or it blew up),
+ * NO_MEMORY. *out is written only on success. */
 FG_API FG_NODISCARD fg_result fg_aero_generate(const fg_aero_config *c,
                                                fg_aero_progress_fn progress, void *user,
                                                fg_aero_texture **out);

@@ -26,7 +26,6 @@
 #define SPIN_TIME 2.0       /* in D / v0 */
 #define SETTLE_PERIODS 3
 #define SETTLE_TOLERANCE 0.05
-#define MAX_CELLS (1u << 27)
 
 /* A growing record of samples of sources * dims values. */
 typedef struct series {
@@ -49,35 +48,40 @@ static int series_push(series *s, const double *values)
     return 0;
 }
 
-static fg_result make_fluid(const fg_aero_plan *p, fg_aero_body *b, fg_fluid **out)
+double fg_aero_box(const fg_aero_plan *p, const fg_aero_body *b, int cells[3], double origin[3])
 {
     double h = p->cell_m, r = fg_aero_body_radius(b), d = p->reference_m;
+    /* at least 2 D of clearance on the sides and upstream, 4 D downstream */
     double up = fmax(p->domain_m[0], r + 2.0 * d), down = fmax(p->domain_m[1], r + 4.0 * d);
     double lat = fmax(p->domain_m[2], r + 2.0 * d);
+    double lo_z = -lat, hi_z = b->shape == FG_AERO_CLUB ? b->length_m + lat : lat;
+    double n[3] = {ceil((up + down) / h), ceil(2.0 * lat / h),
+                   p->dims == 3 ? ceil((hi_z - lo_z) / h) : 1.0};
+    for (int a = 0; a < 3; a++)
+        cells[a] = n[a] < 1 << 30 ? (int)n[a] : 1 << 30;
+    origin[0] = -up;
+    origin[1] = -lat;
+    origin[2] = p->dims == 3 ? lo_z : 0.0;
+    return n[0] * n[1] * n[2];
+}
+
+static fg_result make_fluid(const fg_aero_plan *p, fg_aero_body *b, fg_fluid **out)
+{
     fg_fluid_config c = {
         .dims = p->dims,
-        .cell_m = h,
+        .cell_m = p->cell_m,
         .viscosity_m2_s = p->viscosity_m2_s,
         .density_kg_m3 = p->density_kg_m3,
         .boundary = {{FG_FLUID_INFLOW, FG_FLUID_OPEN},
                      {FG_FLUID_SLIP, FG_FLUID_SLIP},
                      {FG_FLUID_SLIP, FG_FLUID_SLIP}},
         .inflow_m_s = {p->speed_m_s, 0.0, 0.0},
-        .tolerance = 1e-6,
+        /* at Re 100 the texture (St, lift, drag, its spectrum to 0.1 dB) was
+         * the same at 1e-6 and 1e-4, and 16 % faster at 1e-4 */
+        .tolerance = 1e-4,
     };
-    double lo_z = -lat, hi_z = lat;
-    if (b->shape == FG_AERO_CLUB) {
-        lo_z = -lat;
-        hi_z = b->length_m + lat;
-    }
-    c.cells[0] = (int)ceil((up + down) / h);
-    c.cells[1] = (int)ceil(2.0 * lat / h);
-    c.cells[2] = p->dims == 3 ? (int)ceil((hi_z - lo_z) / h) : 1;
-    if ((double)c.cells[0] * c.cells[1] * c.cells[2] > MAX_CELLS)
+    if (fg_aero_box(p, b, c.cells, c.origin_m) > FG_AERO_MAX_CELLS)
         return FG_ERR_ARGUMENT;
-    c.origin_m[0] = -up;
-    c.origin_m[1] = -lat;
-    c.origin_m[2] = p->dims == 3 ? lo_z : 0.0;
     fg_fluid *f;
     fg_result res = fg_fluid_create(&c, &f);
     if (res != FG_OK)
@@ -137,16 +141,18 @@ static int settled(const fg_aero_plan *p, const series *s, double *lift, double 
                    double *rms)
 {
     size_t n = s->n, tail = n / 2;
-    for (size_t i = 0; i < tail; i++)
-        lift[i] = lift_of(p, s, n - tail + i);
-    *period_s = fg_aero_mean_period(lift, tail, p->rate_hz);
+    for (size_t i = 0; i < n; i++)
+        lift[i] = lift_of(p, s, i);
+    /* the period of the recent half; the two windows at the very end */
+    *period_s = fg_aero_dominant_period(lift + n - tail, tail, p->rate_hz, p->band_hz[0],
+                                        p->band_hz[1]);
     *rms = 0.0;
     if (!(*period_s > 0.0))
         return 0;
     size_t w = (size_t)lround(SETTLE_PERIODS * *period_s * p->rate_hz);
-    if (w < 8 || 2 * w > tail)
+    if (w < 8 || 2 * w > n)
         return 0;
-    double r1 = rms_window(lift + tail - w, w), r0 = rms_window(lift + tail - 2 * w, w);
+    double r1 = rms_window(lift + n - w, w), r0 = rms_window(lift + n - 2 * w, w);
     *rms = r1;
     return fabs(r1 - r0) <= SETTLE_TOLERANCE * fmax(r0, r1);
 }

@@ -2,6 +2,7 @@
  * direction on worker threads, each record made into a loop of g, and the
  * texture assembled. The calling thread only reports progress. */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <threads.h>
@@ -17,47 +18,82 @@
 #define SAMPLES_PER_CONVECTIVE_TIME 16.0
 #define GUESSED_STROUHAL 0.2
 
-static int finite_nonnegative(double v)
+static fg_result fault(fg_aero_check *why, fg_aero_field field, fg_result r, double limit)
 {
-    return isfinite(v) && v >= 0.0;
+    why->field = field;
+    why->limit = limit;
+    return r;
 }
 
-static fg_result check_config(const fg_aero_config *c)
+/* A finite value, >= 0 (0 meaning the default), at most most. */
+static fg_result in_range(double v, double most, fg_aero_field field, fg_aero_check *why)
 {
-    double v[] = {c->speed_m_s,      c->viscosity_m2_s,     c->density_kg_m3,
-                  c->cells_per_length, c->sample_rate_hz,   c->seconds,
-                  c->transient_s,    c->max_transient_s,    c->direction_step_rad,
-                  c->domain[0],      c->domain[1],          c->domain[2],
-                  c->cfl};
-    for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
-        if (!isfinite(v[i]))
-            return FG_ERR_NOT_FINITE;
-    for (size_t i = 1; i < sizeof v / sizeof v[0]; i++)
-        if (!finite_nonnegative(v[i]))
-            return FG_ERR_ARGUMENT;
-    if (!(c->speed_m_s > 0.0) || (unsigned)c->tone > FG_AERO_CAVITY)
-        return FG_ERR_ARGUMENT;
-    if (c->cells_per_length != 0.0 && (c->cells_per_length < 4.0 || c->cells_per_length > 1024.0))
-        return FG_ERR_ARGUMENT;
-    if (c->cfl > 4.0 || c->threads > MAX_THREADS || c->sources > FG_AERO_MAX_SOURCES)
-        return FG_ERR_ARGUMENT;
+    if (!isfinite(v))
+        return fault(why, field, FG_ERR_NOT_FINITE, most);
+    if (v < 0.0 || v > most)
+        return fault(why, field, FG_ERR_ARGUMENT, most);
+    return FG_OK;
+}
+
+static fg_result check_fields(const fg_aero_config *c, fg_aero_check *why)
+{
+    if (!isfinite(c->speed_m_s))
+        return fault(why, FG_AERO_FIELD_SPEED, FG_ERR_NOT_FINITE, 0);
+    if (!(c->speed_m_s > 0.0))
+        return fault(why, FG_AERO_FIELD_SPEED, FG_ERR_ARGUMENT, 0);
+    if ((unsigned)c->tone > FG_AERO_CAVITY)
+        return fault(why, FG_AERO_FIELD_TONE, FG_ERR_ARGUMENT, 0);
+    static const struct {
+        size_t offset;
+        double most;
+        fg_aero_field field;
+    } reals[] = {
+        {offsetof(fg_aero_config, viscosity_m2_s), HUGE_VAL, FG_AERO_FIELD_VISCOSITY},
+        {offsetof(fg_aero_config, density_kg_m3), HUGE_VAL, FG_AERO_FIELD_DENSITY},
+        {offsetof(fg_aero_config, cells_per_length), 1024.0, FG_AERO_FIELD_CELLS},
+        {offsetof(fg_aero_config, sample_rate_hz), 1e7, FG_AERO_FIELD_RATE},
+        {offsetof(fg_aero_config, seconds), HUGE_VAL, FG_AERO_FIELD_SECONDS},
+        {offsetof(fg_aero_config, transient_s), HUGE_VAL, FG_AERO_FIELD_TRANSIENT},
+        {offsetof(fg_aero_config, max_transient_s), HUGE_VAL, FG_AERO_FIELD_MAX_TRANSIENT},
+        {offsetof(fg_aero_config, direction_step_rad), 2.0 * FG_PI, FG_AERO_FIELD_STEP},
+        {offsetof(fg_aero_config, domain[0]), HUGE_VAL, FG_AERO_FIELD_DOMAIN},
+        {offsetof(fg_aero_config, domain[1]), HUGE_VAL, FG_AERO_FIELD_DOMAIN},
+        {offsetof(fg_aero_config, domain[2]), HUGE_VAL, FG_AERO_FIELD_DOMAIN},
+        {offsetof(fg_aero_config, cfl), 4.0, FG_AERO_FIELD_CFL},
+    };
+    for (size_t i = 0; i < sizeof reals / sizeof reals[0]; i++) {
+        double v;
+        memcpy(&v, (const char *)c + reals[i].offset, sizeof v);
+        fg_result r = in_range(v, reals[i].most, reals[i].field, why);
+        if (r != FG_OK)
+            return r;
+    }
+    if (c->cells_per_length != 0.0 && c->cells_per_length < 4.0)
+        return fault(why, FG_AERO_FIELD_CELLS, FG_ERR_ARGUMENT, 4.0);
+    if (c->threads > MAX_THREADS)
+        return fault(why, FG_AERO_FIELD_THREADS, FG_ERR_ARGUMENT, MAX_THREADS);
+    if (c->sources > FG_AERO_MAX_SOURCES || (c->sources > 1 && c->shape != FG_AERO_CLUB))
+        return fault(why, FG_AERO_FIELD_SOURCES, FG_ERR_ARGUMENT, FG_AERO_MAX_SOURCES);
     if (c->max_transient_s > 0.0 && c->max_transient_s < c->transient_s)
-        return FG_ERR_ARGUMENT;
+        return fault(why, FG_AERO_FIELD_MAX_TRANSIENT, FG_ERR_ARGUMENT, c->transient_s);
     if (c->direction_step_rad != 0.0 && c->direction_step_rad < FG_PI / 1800.0)
-        return FG_ERR_ARGUMENT;
+        return fault(why, FG_AERO_FIELD_STEP, FG_ERR_ARGUMENT, FG_PI / 1800.0);
     if (c->direction_count > 0) {
         if (!c->directions_rad)
-            return FG_ERR_NULL;
+            return fault(why, FG_AERO_FIELD_DIRECTIONS, FG_ERR_NULL, 0);
         if (c->direction_count > FG_AERO_MAX_DIRECTIONS)
-            return FG_ERR_ARGUMENT;
+            return fault(why, FG_AERO_FIELD_DIRECTIONS, FG_ERR_ARGUMENT, FG_AERO_MAX_DIRECTIONS);
         for (uint32_t i = 0; i < c->direction_count; i++)
-            if (!isfinite(c->directions_rad[i]))
-                return FG_ERR_NOT_FINITE;
+            if (!isfinite(c->directions_rad[i])) {
+                why->index = i;
+                return fault(why, FG_AERO_FIELD_DIRECTIONS, FG_ERR_NOT_FINITE, 0);
+            }
     }
     return FG_OK;
 }
 
-static fg_result make_plan(const fg_aero_config *c, const fg_aero_body *b, fg_aero_plan *p)
+static fg_result make_plan(const fg_aero_config *c, const fg_aero_body *b, fg_aero_plan *p,
+                           fg_aero_check *why)
 {
     memset(p, 0, sizeof *p);
     p->dims = b->dims;
@@ -71,8 +107,9 @@ static fg_result make_plan(const fg_aero_config *c, const fg_aero_body *b, fg_ae
     p->rate_hz = c->sample_rate_hz > 0.0 ? c->sample_rate_hz
                                          : SAMPLES_PER_CONVECTIVE_TIME / convective;
     /* the texture must resolve the shedding: at least 8 samples a period */
-    if (p->rate_hz < 8.0 * GUESSED_STROUHAL / convective || p->rate_hz > 1e7)
-        return FG_ERR_ARGUMENT;
+    double least = 8.0 * GUESSED_STROUHAL / convective;
+    if (p->rate_hz < least)
+        return fault(why, FG_AERO_FIELD_RATE, FG_ERR_ARGUMENT, least);
     double cfl = c->cfl > 0.0 ? c->cfl : DEFAULT_CFL;
     double dt_most = cfl * p->cell_m / p->speed_m_s, dt_sample = 1.0 / p->rate_hz;
     p->substeps = (uint32_t)ceil(dt_sample / dt_most * (1.0 - 1e-12));
@@ -93,12 +130,47 @@ static fg_result make_plan(const fg_aero_config *c, const fg_aero_body *b, fg_ae
         p->sources = c->sources > 0 ? c->sources
                                     : (uint32_t)fmax(1.0, round(b->length_m / (3.0 * mean_d)));
     } else {
-        if (c->sources > 1)
-            return FG_ERR_ARGUMENT;
         p->sources = 1;
     }
     p->area_m2 = fg_aero_body_area(b);
+    p->band_hz[0] = 0.02 / convective;
+    p->band_hz[1] = 1.0 / convective;
+    int n[3];
+    double origin[3], total = fg_aero_box(p, b, n, origin);
+    if (total > FG_AERO_MAX_CELLS)
+        return fault(why, FG_AERO_FIELD_GRID, FG_ERR_ARGUMENT, total);
     return FG_OK;
+}
+
+/* The whole check: fields, shape, plan. On success b holds the body. */
+static fg_result check(const fg_aero_config *c, fg_aero_body *b, fg_aero_plan *p,
+                       fg_aero_check *why)
+{
+    memset(why, 0, sizeof *why);
+    fg_result r = check_fields(c, why);
+    if (r != FG_OK)
+        return r;
+    r = fg_aero_body_init(b, c, why);
+    if (r != FG_OK)
+        return r;
+    r = make_plan(c, b, p, why);
+    if (r != FG_OK)
+        fg_aero_body_deinit(b);
+    return r;
+}
+
+fg_result fg_aero_config_check(const fg_aero_config *c, fg_aero_check *why)
+{
+    fg_aero_check ignored;
+    why = why ? why : &ignored;
+    if (!c)
+        return FG_ERR_NULL;
+    fg_aero_body b;
+    fg_aero_plan p;
+    fg_result r = check(c, &b, &p, why);
+    if (r == FG_OK)
+        fg_aero_body_deinit(&b);
+    return r;
 }
 
 /* What one direction's flow leaves for the texture. */
@@ -151,7 +223,7 @@ static fg_result build_direction(const fg_aero_plan *p, const fg_aero_record *re
             lift[i] = l;
         }
         uint32_t want = p->seconds > 0.0 ? 0 : p->periods;
-        if (fg_aero_loop_plan(lift, n, p->rate_hz, want, &loop) != 0)
+        if (fg_aero_loop_plan(lift, n, p->rate_hz, p->band_hz[0], p->band_hz[1], want, &loop) != 0)
             r = FG_ERR_NOT_CONVERGED;
     }
     if (r == FG_OK && !(out->samples = malloc((size_t)loop.frames * width * sizeof(float))))
@@ -310,19 +382,14 @@ fg_result fg_aero_generate(const fg_aero_config *c, fg_aero_progress_fn progress
 {
     if (!c || !out)
         return FG_ERR_NULL;
-    fg_result r = check_config(c);
-    if (r != FG_OK)
-        return r;
     fg_aero_body body;
-    r = fg_aero_body_init(&body, c);
+    fg_aero_plan plan;
+    fg_aero_check why;
+    fg_result r = check(c, &body, &plan, &why);
     if (r != FG_OK)
         return r;
-    fg_aero_plan plan;
     double angles[FG_AERO_MAX_DIRECTIONS];
-    uint32_t count = 0;
-    r = make_plan(c, &body, &plan);
-    if (r == FG_OK)
-        count = fg_aero_body_directions(&body, c, angles);
+    uint32_t count = fg_aero_body_directions(&body, c, angles);
     job j = {.plan = &plan, .body = &body, .angles = angles, .count = count};
     atomic_init(&j.next, 0);
     atomic_init(&j.done, 0);

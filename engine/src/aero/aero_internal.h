@@ -29,8 +29,9 @@ typedef struct fg_aero_body {
 } fg_aero_body;
 
 /* Validates the shape fields of c and builds the body (centred, ccw, its
- * symmetry found). Errors as fg_aero_generate's for the shape. */
-fg_result fg_aero_body_init(fg_aero_body *b, const fg_aero_config *c);
+ * symmetry found). Errors as fg_aero_generate's for the shape, the field
+ * in *why. */
+fg_result fg_aero_body_init(fg_aero_body *b, const fg_aero_config *c, fg_aero_check *why);
 void fg_aero_body_deinit(fg_aero_body *b);
 /* Places the body for a flow along +x that is at angle_rad in its frame
  * (2-D: the body turned by -angle). b must not be shared between threads
@@ -68,6 +69,7 @@ typedef struct fg_aero_plan {
     uint32_t periods;
     uint32_t sources;
     double area_m2;           /* what the force coefficients divide by (with rho v0^2 / 2) */
+    double band_hz[2];        /* where the shedding frequency is looked for: St 0.02..1 */
 } fg_aero_plan;
 
 /* Progress of one run, read by the reporting thread. */
@@ -83,6 +85,11 @@ typedef struct fg_aero_record {
     size_t samples;
     double transient_s;
 } fg_aero_record;
+
+#define FG_AERO_MAX_CELLS ((double)(1u << 27))
+
+/* The flow's box around b: cells and origin; returns the cell count. */
+double fg_aero_box(const fg_aero_plan *p, const fg_aero_body *b, int cells[3], double origin[3]);
 
 /* Runs the flow past b (placed for its direction): grid, start-up,
  * recording. Errors: NO_MEMORY, NOT_CONVERGED (no shedding by the longest
@@ -107,15 +114,18 @@ typedef struct fg_aero_loop {
     uint32_t fade;       /* cross-fade length, samples */
 } fg_aero_loop;
 
-/* The mean period of x (n samples at rate) from its upward crossings of
- * its mean, linearly interpolated; 0 when fewer than 3 crossings. */
-double fg_aero_mean_period(const double *x, size_t n, double rate_hz);
-/* Chooses the loop: the most whole periods that fit in n samples with one
+/* The period of x's dominant oscillation (n samples at rate): the peak of
+ * its spectrum between lo and hi (and between two periods in the record
+ * and a quarter of the rate); 0 when there is no clear peak there. */
+double fg_aero_dominant_period(const double *x, size_t n, double rate_hz, double lo_hz,
+                               double hi_hz);
+/* Chooses the loop (the period searched for between lo and hi): the most
+ * whole periods that fit in n samples with one
  * period to spare for the cross-fade (at most want periods when want > 0),
  * the length refined to the lag where the signal best repeats itself.
  * Returns -1 when the signal holds fewer than 2 periods plus the fade. */
-int fg_aero_loop_plan(const double *lift, size_t n, double rate_hz, uint32_t want,
-                      fg_aero_loop *loop);
+int fg_aero_loop_plan(const double *lift, size_t n, double rate_hz, double lo_hz, double hi_hz,
+                      uint32_t want, fg_aero_loop *loop);
 /* out[0 .. frames) = the loop of x: x[i] for i >= fade, and for i < fade the
  * raised-cosine blend of x[i + frames] (weight 1 at i = 0) into x[i]. */
 void fg_aero_loop_crossfade(const double *x, const fg_aero_loop *loop, double *out);

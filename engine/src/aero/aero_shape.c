@@ -63,14 +63,24 @@ static int segments_meet(const double *a, const double *b, const double *c, cons
     return 0;
 }
 
-/* A simple polygon with area, made counter-clockwise and centred on its
- * area centroid, into out[2n]. */
-static fg_result polygon_normalise(const double *in, uint32_t n, double *out)
+static fg_result polygon_fault(fg_aero_check *why, fg_aero_polygon_fault fault,
+                               uint32_t index, uint32_t other)
+{
+    why->field = FG_AERO_FIELD_POLYGON;
+    why->polygon = fault;
+    why->index = index;
+    why->other = other;
+    return fault == FG_AERO_POLYGON_NOT_FINITE ? FG_ERR_NOT_FINITE : FG_ERR_ARGUMENT;
+}
+
+/* Is in[2n] a simple polygon with area? */
+static fg_result polygon_check(const double *in, uint32_t n, fg_aero_check *why)
 {
     if (n < 3 || n > FG_AERO_MAX_POLYGON)
-        return FG_ERR_ARGUMENT;
-    if (!finite_all(in, 2 * (size_t)n))
-        return FG_ERR_NOT_FINITE;
+        return polygon_fault(why, FG_AERO_POLYGON_COUNT, n, 0);
+    for (uint32_t i = 0; i < n; i++)
+        if (!isfinite(in[2 * i]) || !isfinite(in[2 * i + 1]))
+            return polygon_fault(why, FG_AERO_POLYGON_NOT_FINITE, i, 0);
     double lo[2] = {in[0], in[1]}, hi[2] = {in[0], in[1]};
     for (uint32_t i = 0; i < n; i++)
         for (int a = 0; a < 2; a++) {
@@ -79,26 +89,31 @@ static fg_result polygon_normalise(const double *in, uint32_t n, double *out)
         }
     double size = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(size > 0.0))
-        return FG_ERR_ARGUMENT;
-    double eps = 1e-12 * size * size;
+        return polygon_fault(why, FG_AERO_POLYGON_NO_AREA, 0, 0);
     for (uint32_t i = 0; i < n; i++) {
         uint32_t j = (i + 1) % n;
         if (hypot(in[2 * j] - in[2 * i], in[2 * j + 1] - in[2 * i + 1]) <= 1e-9 * size)
-            return FG_ERR_ARGUMENT; /* repeated vertex */
+            return polygon_fault(why, FG_AERO_POLYGON_REPEATED, j, 0);
     }
+    double eps = 1e-12 * size * size;
     for (uint32_t i = 0; i < n; i++)
         for (uint32_t k = i + 1; k < n; k++) {
             uint32_t i1 = (i + 1) % n, k1 = (k + 1) % n;
             if (k == i1 || i == k1)
                 continue; /* neighbours share a vertex */
             if (segments_meet(&in[2 * i], &in[2 * i1], &in[2 * k], &in[2 * k1], eps))
-                return FG_ERR_ARGUMENT;
+                return polygon_fault(why, FG_AERO_POLYGON_CROSSING, i, k);
         }
-    double area = polygon_area(in, n);
-    if (!(fabs(area) > 1e-9 * size * size))
-        return FG_ERR_ARGUMENT;
-    /* centroid */
-    double cx = 0.0, cy = 0.0;
+    if (!(fabs(polygon_area(in, n)) > 1e-9 * size * size))
+        return polygon_fault(why, FG_AERO_POLYGON_NO_AREA, 0, 0);
+    return FG_OK;
+}
+
+/* A checked polygon made counter-clockwise and centred on its area
+ * centroid, into out[2n]. */
+static void polygon_normalise(const double *in, uint32_t n, double *out)
+{
+    double area = polygon_area(in, n), cx = 0.0, cy = 0.0;
     for (uint32_t i = 0; i < n; i++) {
         uint32_t j = (i + 1) % n;
         double w = in[2 * i] * in[2 * j + 1] - in[2 * j] * in[2 * i + 1];
@@ -112,7 +127,6 @@ static fg_result polygon_normalise(const double *in, uint32_t n, double *out)
         out[2 * i] = in[2 * s] - cx;
         out[2 * i + 1] = in[2 * s + 1] - cy;
     }
-    return FG_OK;
 }
 
 static double polygon_sdf(const double *p, uint32_t n, double x, double y)
@@ -244,21 +258,35 @@ static void find_symmetry(fg_aero_body *b)
 
 /* --- the body ------------------------------------------------------------ */
 
-fg_result fg_aero_body_init(fg_aero_body *b, const fg_aero_config *c)
+static fg_result size_fault(fg_aero_check *why, fg_result r)
+{
+    why->field = FG_AERO_FIELD_SIZE;
+    return r;
+}
+
+fg_result fg_aero_body_init(fg_aero_body *b, const fg_aero_config *c, fg_aero_check *why)
 {
     memset(b, 0, sizeof *b);
     b->shape = c->shape;
     double params[4] = {c->length_m, c->height_m, c->diameter_m[0], c->diameter_m[1]};
-    if (!finite_all(params, 4) || !isfinite(c->reference_m))
+    if (!finite_all(params, 4))
+        return size_fault(why, FG_ERR_NOT_FINITE);
+    if (!isfinite(c->reference_m)) {
+        why->field = FG_AERO_FIELD_REFERENCE;
         return FG_ERR_NOT_FINITE;
-    if (c->length_m < 0.0 || c->height_m < 0.0 || c->diameter_m[0] < 0.0 ||
-        c->diameter_m[1] < 0.0 || c->reference_m < 0.0)
+    }
+    if (c->reference_m < 0.0) {
+        why->field = FG_AERO_FIELD_REFERENCE;
         return FG_ERR_ARGUMENT;
+    }
+    if (c->length_m < 0.0 || c->height_m < 0.0 || c->diameter_m[0] < 0.0 ||
+        c->diameter_m[1] < 0.0)
+        return size_fault(why, FG_ERR_ARGUMENT);
     switch (c->shape) {
     case FG_AERO_CIRCLE:
     case FG_AERO_SPHERE:
         if (!(c->length_m > 0.0))
-            return FG_ERR_ARGUMENT;
+            return size_fault(why, FG_ERR_ARGUMENT);
         b->dims = c->shape == FG_AERO_CIRCLE ? 2 : 3;
         b->radius_m = 0.5 * c->length_m;
         b->reference_m = c->length_m;
@@ -273,27 +301,25 @@ fg_result fg_aero_body_init(fg_aero_body *b, const fg_aero_config *c)
         if (c->shape == FG_AERO_RECTANGLE) {
             double w = c->length_m, h = c->height_m > 0.0 ? c->height_m : c->length_m;
             if (!(w > 0.0))
-                return FG_ERR_ARGUMENT;
+                return size_fault(why, FG_ERR_ARGUMENT);
             double r[8] = {-w / 2, -h / 2, w / 2, -h / 2, w / 2, h / 2, -w / 2, h / 2};
             memcpy(rect, r, sizeof r);
             in = rect;
             n = 4;
         } else if (!in) {
+            why->field = FG_AERO_FIELD_POLYGON;
             return FG_ERR_NULL;
         }
-        if (n < 3 || n > FG_AERO_MAX_POLYGON)
-            return FG_ERR_ARGUMENT;
+        fg_result r = polygon_check(in, n, why);
+        if (r != FG_OK)
+            return r;
         b->polygon = malloc(2 * (size_t)n * sizeof(double));
         b->placed = malloc(2 * (size_t)n * sizeof(double));
         if (!b->polygon || !b->placed) {
             fg_aero_body_deinit(b);
             return FG_ERR_NO_MEMORY;
         }
-        fg_result r = polygon_normalise(in, n, b->polygon);
-        if (r != FG_OK) {
-            fg_aero_body_deinit(b);
-            return r;
-        }
+        polygon_normalise(in, n, b->polygon);
         b->vertices = n;
         b->reference_m = fg_aero_body_frontal(b, 0.0);
         find_symmetry(b);
@@ -302,7 +328,7 @@ fg_result fg_aero_body_init(fg_aero_body *b, const fg_aero_config *c)
     case FG_AERO_CLUB: {
         double len = c->length_m, r0 = 0.5 * c->diameter_m[0], r1 = 0.5 * c->diameter_m[1];
         if (!(r0 > 0.0) || !(r1 > 0.0) || !(len > 2.0 * fmax(r0, r1) * (1.0 + 1e-6)))
-            return FG_ERR_ARGUMENT;
+            return size_fault(why, FG_ERR_ARGUMENT);
         b->dims = 3;
         b->length_m = len;
         b->club_r[0] = r0;
@@ -314,6 +340,7 @@ fg_result fg_aero_body_init(fg_aero_body *b, const fg_aero_config *c)
         break;
     }
     default:
+        why->field = FG_AERO_FIELD_SHAPE;
         return FG_ERR_ARGUMENT;
     }
     if (c->reference_m > 0.0)
