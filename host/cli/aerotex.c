@@ -49,7 +49,8 @@ static const char usage[] =
     "  --threads N          directions computed at once (the number of CPUs)\n"
     "  --quiet              no progress line on a terminal\n"
     "Progress goes to stderr when it is a terminal; a summary to stdout.\n"
-    "Exit: 0 done, 1 the flow did not settle or an I/O error, 2 bad arguments.\n";
+    "A direction in which the body does not shed is quiet (frequency 0 in the summary).\n"
+    "Exit: 0 done, 1 the flow blew up or an I/O error, 2 bad arguments.\n";
 
 typedef struct options {
     fg_aero_config c;
@@ -449,9 +450,8 @@ int aerotex_main(int argc, char **argv)
         fputc('\n', stderr);
     if (r != FG_OK) {
         const char *reason = r == FG_ERR_NOT_CONVERGED
-                              ? "the flow did not settle into shedding (or blew up); try a "
-                                "longer --max-transient, a finer --grid or a smaller --cfl"
-                              : fg_result_str(r);
+                                 ? "the flow blew up; try a smaller --cfl or a finer --grid"
+                                 : fg_result_str(r);
         fprintf(stderr, "fulgur aerotex: %s\n", reason);
         return r == FG_ERR_NOT_CONVERGED || r == FG_ERR_NO_MEMORY ? CLI_RUNTIME : CLI_USAGE;
     }

@@ -57,14 +57,15 @@ typedef enum fg_aero_tone {
 typedef struct fg_aero_direction {
     double angle_rad;      /* the flow's angle in the body frame (2-D; 0 in 3-D) */
     double frontal_m;      /* the body's width across this flow (3-D: across x in y) */
-    double frequency_hz;   /* the shedding frequency found in the lift, at v0 */
+    double frequency_hz;   /* the shedding frequency found in the lift, at v0; 0 when
+                              the body does not shed (a quiet direction) */
     double strouhal;       /* frequency_hz * reference_m / speed_m_s */
     double lift_amplitude; /* half the peak-to-peak lift coefficient over the loop */
     double drag_mean;      /* mean drag coefficient (the coefficients are of
                               rho v0^2 / 2 times reference_m in 2-D, times the
                               frontal area in 3-D) */
     double transient_s;    /* start-up simulated and discarded before the loop */
-    uint32_t periods;      /* whole shedding periods the loop holds */
+    uint32_t periods;      /* whole shedding periods the loop holds (0 when quiet) */
     uint32_t frames;       /* loop length, samples */
     const float *samples;  /* [sources][frames][components], N/s */
 } fg_aero_direction;
@@ -117,7 +118,8 @@ typedef struct fg_aero_texture fg_aero_texture;
  * tone; dims or components not the shape's; counts out of range — no
  * direction, more than FG_AERO_MAX_DIRECTIONS, sources not 1 in 2-D or
  * above FG_AERO_MAX_SOURCES, a polygon outside 3..FG_AERO_MAX_POLYGON,
- * frames 0 or above FG_AERO_MAX_FRAMES; non-positive lengths, speed,
+ * frames 0 or above FG_AERO_MAX_FRAMES, periods 0 with a frequency;
+ * non-positive lengths, speed,
  * viscosity, density or rate; reynolds not reference * speed / viscosity
  * within 1e-6; angles not increasing or outside the fundamental range of
  * the symmetry; spans not positive), NOT_FINITE (a NaN or infinite value
@@ -263,14 +265,16 @@ typedef void (*fg_aero_progress_fn)(const fg_aero_progress *p, void *user);
  * whole number of shedding periods cut and cross-faded, and g = dF/dt.
  * [sim-thread]; blocks until done (seconds to hours: see bench/results/
  * aero_precompute.md); progress may be NULL.
+ * A direction in which the body does not shed by max_transient_s (a
+ * streamlined section, Re below 47) is quiet: frequency 0, the steady
+ * force's small fluctuation looped.
  * Errors: NULL (c, out, or the polygon), ARGUMENT (an unknown shape or
  * tone; a length, diameter, speed, rate, duration or count out of range; a
  * polygon with fewer than 3 or more than FG_AERO_MAX_POLYGON vertices,
  * repeated vertices, crossing edges or no area; a club whose diameters
  * exceed its length; a grid above 2^27 cells: fg_aero_config_check says
  * which), NOT_FINITE (a NaN or infinite value), NOT_CONVERGED (the flow
- * did not settle into shedding by max_transient_s, or it blew up),
- * NO_MEMORY. *out is written only on success. */
+ * blew up), NO_MEMORY. *out is written only on success. */
 FG_API FG_NODISCARD fg_result fg_aero_generate(const fg_aero_config *c,
                                                fg_aero_progress_fn progress, void *user,
                                                fg_aero_texture **out);

@@ -10,6 +10,10 @@
  * to 15 diameters upstream. Free-slip faces do not leak; their blockage
  * (D / width) raises St by about 2 % at 6 diameters either side.
  *
+ * A body that does not shed (streamlined, or below Re 47) gets a quiet
+ * direction: the record of its steady force, looped over the periods a
+ * shedding body would have had, with frequency 0.
+ *
  * Start-up: from rest; for the first 2 D / v0 the body's surface turns
  * (surface speed v0 / 2) to break the symmetry that would otherwise delay
  * shedding for hundreds of D / v0 on a symmetric grid. That part, and the
@@ -165,13 +169,14 @@ static fg_result step(fg_fluid *f, const fg_aero_plan *p, fg_aero_watch *w)
     return r == FG_ERR_NOT_FINITE ? FG_ERR_NOT_CONVERGED : FG_OK;
 }
 
-/* From rest to settled shedding. On success *period_s is the shedding period. */
+/* From rest to settled shedding. On success *period_s is the shedding
+ * period, or 0 when there is none. */
 static fg_result transient(fg_fluid *f, const fg_aero_plan *p, const fg_aero_body *b,
                            fg_aero_watch *w, double *period_s)
 {
     series s = {.width = (size_t)p->sources * p->dims};
     double *sample = malloc(s.width * sizeof(double));
-    size_t most = (size_t)ceil(p->max_transient_s * p->rate_hz) + 2;
+    size_t most = (size_t)ceil(p->max_transient_s * p->rate_hz) + 4;
     double *lift = malloc(most * sizeof(double));
     fg_result r = sample && lift ? FG_OK : FG_ERR_NO_MEMORY;
     double spin_until = SPIN_TIME * p->reference_m / p->speed_m_s;
@@ -192,20 +197,21 @@ static fg_result transient(fg_fluid *f, const fg_aero_plan *p, const fg_aero_bod
         if (r != FG_OK)
             break;
         source_forces(p, b, f, sample);
-        if (series_push(&s, sample) != 0 || s.n > most) {
-            r = s.n > most ? FG_ERR_NOT_CONVERGED : FG_ERR_NO_MEMORY;
+        if (s.n == most || series_push(&s, sample) != 0) {
+            r = FG_ERR_NO_MEMORY; /* (most outlasts max_transient_s) */
             break;
         }
         t = fg_fluid_time_s(f);
-        if (t < next_check)
+        if (t < next_check && t < p->max_transient_s)
             continue;
         int done = settled(p, &s, lift, period_s, &rms);
         if (done)
             break;
         if (t >= p->max_transient_s) {
-            /* unsettled but shedding (a chaotic wake): go on; no shedding: fail */
-            if (!(*period_s > 0.0) || !(rms > quiet))
-                r = FG_ERR_NOT_CONVERGED;
+            /* unsettled but shedding (a chaotic wake): go on; no shedding
+             * (a streamlined body, Re below 47): a quiet direction */
+            if (!(rms > quiet))
+                *period_s = 0.0;
             break;
         }
         next_check = t + (*period_s > 0.0 ? *period_s : p->reference_m / p->speed_m_s);
@@ -235,6 +241,9 @@ fg_result fg_aero_run(const fg_aero_plan *p, fg_aero_body *b, fg_aero_watch *w,
         return r;
     }
     out->transient_s = fg_fluid_time_s(f);
+    out->shedding = period > 0.0;
+    if (!out->shedding)
+        period = p->reference_m / (FG_AERO_GUESSED_STROUHAL * p->speed_m_s);
     /* the loop's periods, one more for the cross-fade, half a period of slack */
     double periods = p->seconds > 0.0 ? fmax(2.0, round(p->seconds / period)) : p->periods;
     size_t samples = (size_t)ceil((periods + 1.5) * period * p->rate_hz);

@@ -16,7 +16,6 @@
 #define DEFAULT_PERIODS 24
 #define DEFAULT_CFL 0.5
 #define SAMPLES_PER_CONVECTIVE_TIME 16.0
-#define GUESSED_STROUHAL 0.2
 
 static fg_result fault(fg_aero_check *why, fg_aero_field field, fg_result r, double limit)
 {
@@ -107,7 +106,7 @@ static fg_result make_plan(const fg_aero_config *c, const fg_aero_body *b, fg_ae
     p->rate_hz = c->sample_rate_hz > 0.0 ? c->sample_rate_hz
                                          : SAMPLES_PER_CONVECTIVE_TIME / convective;
     /* the texture must resolve the shedding: at least 8 samples a period */
-    double least = 8.0 * GUESSED_STROUHAL / convective;
+    double least = 8.0 * FG_AERO_GUESSED_STROUHAL / convective;
     if (p->rate_hz < least)
         return fault(why, FG_AERO_FIELD_RATE, FG_ERR_ARGUMENT, least);
     double cfl = c->cfl > 0.0 ? c->cfl : DEFAULT_CFL;
@@ -206,6 +205,19 @@ static void stats(const fg_aero_plan *p, const double *lift, const double *drag,
     d->drag_mean = mean / n / q;
 }
 
+/* A loop for a body that does not shed: as many nominal periods (St 0.2)
+ * as a shedding one would get, faded over one. */
+static void quiet_loop(const fg_aero_plan *p, size_t n, uint32_t want, fg_aero_loop *loop)
+{
+    double period = p->reference_m / (FG_AERO_GUESSED_STROUHAL * p->speed_m_s);
+    double samples = period * p->rate_hz;
+    loop->period_s = period;
+    loop->fade = (uint32_t)lround(samples);
+    uint32_t fit = (uint32_t)floor(((double)n - loop->fade) / samples);
+    loop->periods = 0; /* no shedding: none */
+    loop->frames = (uint32_t)lround((want > 0 && want < fit ? want : fit) * samples);
+}
+
 /* The record of one direction made into its loop of g. */
 static fg_result build_direction(const fg_aero_plan *p, const fg_aero_record *rec,
                                  direction_result *out)
@@ -223,7 +235,10 @@ static fg_result build_direction(const fg_aero_plan *p, const fg_aero_record *re
             lift[i] = l;
         }
         uint32_t want = p->seconds > 0.0 ? 0 : p->periods;
-        if (fg_aero_loop_plan(lift, n, p->rate_hz, p->band_hz[0], p->band_hz[1], want, &loop) != 0)
+        if (!rec->shedding)
+            quiet_loop(p, n, want, &loop);
+        else if (fg_aero_loop_plan(lift, n, p->rate_hz, p->band_hz[0], p->band_hz[1], want,
+                                   &loop) != 0)
             r = FG_ERR_NOT_CONVERGED;
     }
     if (r == FG_OK && !(out->samples = malloc((size_t)loop.frames * width * sizeof(float))))
@@ -249,7 +264,7 @@ static fg_result build_direction(const fg_aero_plan *p, const fg_aero_record *re
                                         &out->samples[(size_t)s * loop.frames * p->dims + a],
                                         (size_t)p->dims);
             }
-        out->info.frequency_hz = 1.0 / loop.period_s;
+        out->info.frequency_hz = rec->shedding ? 1.0 / loop.period_s : 0.0;
         out->info.strouhal = out->info.frequency_hz * p->reference_m / p->speed_m_s;
         out->info.periods = loop.periods;
         out->info.frames = loop.frames;
@@ -406,7 +421,7 @@ fg_result fg_aero_generate(const fg_aero_config *c, fg_aero_progress_fn progress
     thrd_t t[MAX_THREADS];
     if (r == FG_OK) {
         double guess = plan.transient_s + (plan.periods + 1.5) * plan.reference_m /
-                                              (GUESSED_STROUHAL * plan.speed_m_s);
+                                              (FG_AERO_GUESSED_STROUHAL * plan.speed_m_s);
         for (uint32_t i = 0; i < count; i++) {
             atomic_init(&j.watch[i].phase, FG_AERO_TRANSIENT);
             atomic_init(&j.watch[i].steps, 0);

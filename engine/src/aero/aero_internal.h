@@ -84,7 +84,11 @@ typedef struct fg_aero_record {
     double *force;            /* [samples][sources][dims], N (per metre in 2-D) */
     size_t samples;
     double transient_s;
+    int shedding;             /* 0: no shedding found (a quiet direction) */
 } fg_aero_record;
+
+/* The Strouhal number assumed before one is found (and for quiet directions). */
+#define FG_AERO_GUESSED_STROUHAL 0.2
 
 #define FG_AERO_MAX_CELLS ((double)(1u << 27))
 

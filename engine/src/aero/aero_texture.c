@@ -166,7 +166,7 @@ static fg_result check_directions(const fg_aero_texture_desc *d, size_t *floats)
         if (!in_range || (i > 0 && !(r->angle_rad > d->direction[i - 1].angle_rad)))
             return FG_ERR_ARGUMENT;
         if (!(r->frontal_m > 0.0) || r->frequency_hz < 0.0 || r->lift_amplitude < 0.0 ||
-            r->transient_s < 0.0 || r->periods < 1 || r->frames < 1 ||
+            r->transient_s < 0.0 || (r->periods < 1 && r->frequency_hz != 0.0) || r->frames < 1 ||
             r->frames > FG_AERO_MAX_FRAMES)
             return FG_ERR_ARGUMENT;
         if (!r->samples)
