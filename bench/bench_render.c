@@ -12,15 +12,15 @@ static void check(fg_result r, const char *what)
     }
 }
 
-bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_params *params,
+bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_config *params,
                             const fg_listener *listener, unsigned block)
 {
-    return bench_render_tree_with(nodes, count, params, &(fg_propagation){0}, FG_MODEL_WM,
+    return bench_render_tree_with(nodes, count, params, &(fg_propagation_config){0}, FG_MODEL_WM,
                                   listener, block);
 }
 
-bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_sound_params *params,
-                                 const fg_propagation *prop, fg_voice_model model,
+bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_sound_config *params,
+                                 const fg_propagation_config *prop, fg_voice_model model,
                                  const fg_listener *listener, unsigned block)
 {
     fg_engine_config cfg = {.sample_rate_hz = 48000, .max_block_frames = block,
@@ -35,12 +35,12 @@ bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_so
     double t0 = bench_now_s();
     check(fg_engine_post(e, &d, NULL), "post");
     double t1 = bench_now_s();
-    fg_engine_stats st = {0};
+    fg_engine_report st = {0};
     uint64_t frames = 0;
     while (st.finished == 0) {
         check(fg_engine_render(e, planes, block), "render");
         frames += block;
-        fg_engine_get_stats(e, &st);
+        fg_engine_get_report(e, &st);
     }
     double t2 = bench_now_s();
     run.post_s = t1 - t0;

@@ -15,12 +15,12 @@ typedef struct bench_run {
 
 /* Renders nodes[0..count) as one discharge with params heard from
  * listener, in blocks of block frames at 48 kHz. Exits on an engine error. */
-bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_params *params,
+bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_config *params,
                             const fg_listener *listener, unsigned block);
 
 /* The same with propagation effects and a voice model. */
-bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_sound_params *params,
-                                 const fg_propagation *prop, fg_voice_model model,
+bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_sound_config *params,
+                                 const fg_propagation_config *prop, fg_voice_model model,
                                  const fg_listener *listener, unsigned block);
 
 #endif

@@ -1,4 +1,4 @@
-/* Shared helpers of the benchmark programs: a monotonic clock, medians,
+/* Shared helpers of the benchmark programs: a monotonic clock, a CPU clock, medians,
  * a least-squares line, and CSV output. */
 #ifndef FULGUR_BENCH_UTIL_H
 #define FULGUR_BENCH_UTIL_H
@@ -7,6 +7,10 @@
 #include <stdio.h>
 
 double bench_now_s(void);
+
+/* CPU time of the calling thread: what a benchmark costs on a shared
+ * machine, where wall time also counts other processes. */
+double bench_cpu_s(void);
 
 /* Median of v[0..n) (sorts v in place). */
 double bench_median(double *v, size_t n);

@@ -44,21 +44,14 @@ static void make_bolt(fg_node *nodes, int k)
 {
     synth_tree(nodes, BOLT_SEGMENTS, 5000.0, 3.0, (uint64_t)k + 11);
     double a = 2.399963 * k, d = 2000.0 + 1000.0 * fmod(0.618034 * k, 1.0);
-    for (size_t i = 0; i <= BOLT_SEGMENTS; i++) {
-        nodes[i].x += d * cos(a);
-        nodes[i].y += d * sin(a);
-    }
+    fg_tree_translate(nodes, BOLT_SEGMENTS + 1, (double[]){d * cos(a), d * sin(a), 0.0});
 }
 
 static void make_spark(fg_node *nodes, int k)
 {
     synth_tree(nodes, SPARK_SEGMENTS, 0.02, 0.002, (uint64_t)k + 1000);
     double a = 1.3 * k;
-    for (size_t i = 0; i <= SPARK_SEGMENTS; i++) {
-        nodes[i].x += 1.5 * cos(a);
-        nodes[i].y += 1.5 * sin(a);
-        nodes[i].z += 1.0;
-    }
+    fg_tree_translate(nodes, SPARK_SEGMENTS + 1, (double[]){1.5 * cos(a), 1.5 * sin(a), 1.0});
 }
 
 static timing run(const load *L, fg_node *tree)
@@ -73,7 +66,7 @@ static timing run(const load *L, fg_node *tree)
     fg_listener head = {.position = {0, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
     if ((r = fg_engine_set_listener(e, &head)) != FG_OK)
         die("listener", r);
-    fg_sound_params bolt, spark;
+    fg_sound_config bolt, spark;
     if (fg_preset_sound(FG_PRESET_LIGHTNING, &bolt) != FG_OK ||
         fg_preset_sound(FG_PRESET_SPARK_BALLS, &spark) != FG_OK)
         exit(1);
@@ -106,8 +99,8 @@ static timing run(const load *L, fg_node *tree)
             us[n++] = 1e6 * dt;
         fg_engine_collect(e);
     }
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     timing out = {.p50 = bench_quantile(us, n, 0.5), .p99 = bench_quantile(us, n, 0.99),
                   .max = bench_quantile(us, n, 1.0), .budget_us = 1e6 * L->block / FS,
                   .blocks = n, .late_events = st.late_events};
@@ -132,7 +125,7 @@ static double worst_block(unsigned block, fg_node *tree)
     if (fg_engine_create(&cfg, &e) != FG_OK)
         exit(1);
     fg_listener head = {.position = {0, 0, 500.0}, .forward = {1, 0, 0}, .up = {0, 0, 1}};
-    fg_sound_params p;
+    fg_sound_config p;
     if (fg_engine_set_listener(e, &head) != FG_OK || fg_preset_sound(FG_PRESET_LIGHTNING, &p) != FG_OK)
         exit(1);
     p.return_stroke_speed_m_s = 1e12; /* the whole arc emits at once */
@@ -141,13 +134,13 @@ static double worst_block(unsigned block, fg_node *tree)
         exit(1);
     float *planes[2] = {malloc(block * sizeof(float)), malloc(block * sizeof(float))};
     double worst = 0;
-    fg_engine_stats st = {0};
+    fg_engine_report st = {0};
     while (st.finished == 0) {
         double t0 = bench_now_s();
         if (fg_engine_render(e, planes, block) != FG_OK)
             exit(1);
         worst = fmax(worst, bench_now_s() - t0);
-        fg_engine_get_stats(e, &st);
+        fg_engine_get_report(e, &st);
     }
     free(planes[0]);
     free(planes[1]);

@@ -15,7 +15,7 @@
 
 typedef struct effect {
     const char *name;
-    fg_propagation prop;
+    fg_propagation_config prop;
     fg_voice_model model;
 } effect;
 
@@ -36,7 +36,7 @@ int main(void)
          FG_MODEL_WM},
         {"Abe's voice model (512 sources)", {.refraction_radius_m = 0}, FG_MODEL_ABE},
     };
-    fg_sound_params p;
+    fg_sound_config p;
     if (fg_preset_sound(FG_PRESET_LIGHTNING, &p) != FG_OK)
         return 1;
     fg_node *nodes = malloc((SEGMENTS + 1) * sizeof *nodes);

@@ -38,9 +38,9 @@ static void check(fg_result r, const char *what)
 }
 
 /* The spark-ball scene with the origin moved along x by dx_m. */
-static void set_scene(fg_field *f, fg_discharge_setup *s, double dx_m)
+static void set_scene(fg_field *f, fg_field_scene *s, double dx_m)
 {
-    fg_shape shapes[FG_DISCHARGE_MAX_SHAPES];
+    fg_shape shapes[FG_FIELD_SCENE_MAX_SHAPES];
     for (size_t i = 0; i < s->shape_count; i++)
         shapes[i] = s->shapes[i];
     shapes[0].centre_m[0] += dx_m;
@@ -49,8 +49,8 @@ static void set_scene(fg_field *f, fg_discharge_setup *s, double dx_m)
 
 static void solve_row(FILE *out, const size_plan *p, fg_solver solver, int warm)
 {
-    fg_discharge_setup s;
-    check(fg_discharge_preset(FG_PRESET_SPARK_BALLS, p->size, &s), "preset");
+    fg_field_scene s;
+    check(fg_field_scene_preset(FG_PRESET_SPARK_BALLS, p->size, &s), "preset");
     fg_field *f;
     check(fg_field_create(&s.grid, &f), "create");
     double cell[3];
@@ -90,8 +90,8 @@ static void solve_row(FILE *out, const size_plan *p, fg_solver solver, int warm)
  * converged, then the tree). */
 static void discharge_rows(FILE *out, fg_preset preset, int size)
 {
-    fg_discharge_setup s;
-    check(fg_discharge_preset(preset, size, &s), "preset");
+    fg_field_scene s;
+    check(fg_field_scene_preset(preset, size, &s), "preset");
     fg_field *f;
     fg_tree *tree;
     check(fg_field_create(&s.grid, &f), "create");

@@ -30,9 +30,9 @@ static void check(fg_result r, const char *what)
     }
 }
 
-static void set_scene(fg_field *f, const fg_discharge_setup *s, double dx_m)
+static void set_scene(fg_field *f, const fg_field_scene *s, double dx_m)
 {
-    fg_shape shapes[FG_DISCHARGE_MAX_SHAPES];
+    fg_shape shapes[FG_FIELD_SCENE_MAX_SHAPES];
     for (size_t i = 0; i < s->shape_count; i++)
         shapes[i] = s->shapes[i];
     shapes[0].centre_m[0] += dx_m;
@@ -41,8 +41,8 @@ static void set_scene(fg_field *f, const fg_discharge_setup *s, double dx_m)
 
 static void rows(FILE *out, fgg_context *ctx, const size_plan *p, int warm)
 {
-    fg_discharge_setup s;
-    check(fg_discharge_preset(FG_PRESET_SPARK_BALLS, p->size, &s), "preset");
+    fg_field_scene s;
+    check(fg_field_scene_preset(FG_PRESET_SPARK_BALLS, p->size, &s), "preset");
     fg_field *f;
     check(fg_field_create(&s.grid, &f), "create");
     double cell[3];

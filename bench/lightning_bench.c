@@ -17,18 +17,18 @@ typedef fg_result (*gen)(uint64_t seed, double step_m, fg_tree *t);
 
 static fg_result statistical(uint64_t seed, double step_m, fg_tree *t)
 {
-    fg_lightning_params p = {.segment_m = step_m, .seed = seed};
+    fg_lightning_config p = {.segment_m = step_m, .seed = seed};
     return fg_lightning_generate(&p, t, NULL);
 }
 
 static fg_result designed(uint64_t seed, double step_m, fg_tree *t)
 {
-    const fg_thunder_block blocks[] = {{FG_THUNDER_ROAR, 0.1, 0.25, 0.5},
+    const fg_thunder_feature features[] = {{FG_THUNDER_ROAR, 0.1, 0.25, 0.5},
                                        {FG_THUNDER_CLAP, 0.3, 0.45, 1},
                                        {FG_THUNDER_RUMBLE, 0.55, 0.8, 1}};
-    fg_lightning_params p = {.segment_m = step_m,
-                             .blocks = blocks,
-                             .block_count = 3,
+    fg_lightning_config p = {.segment_m = step_m,
+                             .features = features,
+                             .feature_count = 3,
                              .listener_m = {3000, 0, 1.7},
                              .seed = seed};
     return fg_lightning_generate(&p, t, NULL);
@@ -38,7 +38,7 @@ static fg_result charges(uint64_t seed, double step_m, fg_tree *t)
 {
     static const fg_point_charge cloud[] = {
         {{0, 0, 5500}, -40}, {{0, 0, 8000}, 40}, {{0, 0, -5500}, 40}};
-    fg_charges_params p = {.charges = cloud,
+    fg_charges_config p = {.charges = cloud,
                            .charge_count = 3,
                            .start_m = {0, 0, 5000},
                            .step_m = step_m,

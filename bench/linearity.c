@@ -19,7 +19,7 @@ static fg_listener at_3km(void)
     return (fg_listener){.position = {3000, 0, 1.7}, .forward = {-1, 0, 0}, .up = {0, 0, 1}};
 }
 
-static bench_run median_run(const fg_node *nodes, size_t count, const fg_sound_params *p,
+static bench_run median_run(const fg_node *nodes, size_t count, const fg_sound_config *p,
                             int repeats)
 {
     double post[9], render[9];
@@ -40,7 +40,7 @@ int main(int argc, char **argv)
     int repeats = argc > 1 ? atoi(argv[1]) : 5;
     if (repeats < 1 || repeats > 9)
         repeats = 5;
-    fg_sound_params p;
+    fg_sound_config p;
     if (fg_preset_sound(FG_PRESET_LIGHTNING, &p) != FG_OK)
         return 1;
     char cpu[256];
@@ -82,7 +82,7 @@ int main(int argc, char **argv)
     for (size_t a = 0; a < sizeof t0s / sizeof t0s[0]; a++) {
         for (size_t b = 0; b < sizeof halves / sizeof halves[0]; b++) {
             synth_tree(nodes, SWEEP_SEGMENTS, 5000.0, 2 * halves[b], 2);
-            fg_sound_params q = p;
+            fg_sound_config q = p;
             q.t0_s = 1e-3 * t0s[a];
             bench_run r = median_run(nodes, SWEEP_SEGMENTS + 1, &q, repeats);
             /* the longest a segment's wave can be: 2 (T + l/c) at 3 km */

@@ -19,7 +19,7 @@
 #define REPEATS 3
 
 /* The naive render: P points per segment, each an N-wave of its own r. */
-static void naive(const fg_node *nodes, size_t count, const fg_sound_params *p, const double ear[3],
+static void naive(const fg_node *nodes, size_t count, const fg_sound_config *p, const double ear[3],
                   int points, float *out, size_t frames)
 {
     memset(out, 0, frames * sizeof *out);
@@ -44,7 +44,7 @@ static void naive(const fg_node *nodes, size_t count, const fg_sound_params *p, 
 }
 
 /* The engine's render of the same tree, one ear, no strokes or jitter. */
-static double wm_render(const fg_node *nodes, size_t count, const fg_sound_params *p,
+static double wm_render(const fg_node *nodes, size_t count, const fg_sound_config *p,
                         const fg_listener *head, float *out, size_t frames)
 {
     fg_engine_config cfg = {.sample_rate_hz = FS, .channels = 1, .max_block_frames = 512,
@@ -68,7 +68,7 @@ static double wm_render(const fg_node *nodes, size_t count, const fg_sound_param
 
 int main(void)
 {
-    fg_sound_params p;
+    fg_sound_config p;
     if (fg_preset_sound(FG_PRESET_LIGHTNING, &p) != FG_OK)
         return 1;
     p.t0_jitter = 0;

@@ -28,13 +28,13 @@ static void must(fg_result r, const char *what)
 
 /* A tree of the scale's preset; the field is kept between seeds, as a host
  * re-triggering a discharge would keep it. */
-static double generate(fg_preset preset, uint64_t seed, fg_field *field, fg_discharge_setup *setup,
+static double generate(fg_preset preset, uint64_t seed, fg_field *field, fg_field_scene *setup,
                        fg_tree *tree)
 {
     fg_tree_clear(tree);
     double t0 = bench_now_s();
     if (preset == FG_PRESET_LIGHTNING) {
-        fg_lightning_params p = {.strike_m = {0, 0}, .seed = seed};
+        fg_lightning_config p = {.strike_m = {0, 0}, .seed = seed};
         must(fg_lightning_generate(&p, tree, NULL), "lightning");
     } else {
         fg_field_source src;
@@ -64,12 +64,12 @@ int main(void)
     must(fg_tree_create(16384, &tree), "tree");
     for (size_t i = 0; i < sizeof scales / sizeof scales[0]; i++) {
         const scale *sc = &scales[i];
-        fg_sound_params sound;
+        fg_sound_config sound;
         must(fg_preset_sound(sc->preset, &sound), "preset");
-        fg_discharge_setup setup;
+        fg_field_scene setup;
         fg_field *field = NULL;
         if (sc->preset != FG_PRESET_LIGHTNING) {
-            must(fg_discharge_preset(sc->preset, 0, &setup), "setup");
+            must(fg_field_scene_preset(sc->preset, 0, &setup), "setup");
             must(fg_field_create(&setup.grid, &field), "field");
             must(fg_field_set_shapes(field, setup.shapes, setup.shape_count, NULL), "shapes");
             must(fg_field_solve(field, NULL, NULL), "solve");

@@ -16,13 +16,14 @@
 #include <string.h>
 
 #include "bench_util.h"
+#include "fg_array.h"
+#include "fg_math.h"
 #include "fulgur/fulgur.h"
 
 #define FS 48000.0
 #define C 343.0
 #define WINDOW 16384
 #define TABLE2_SEEDS 8
-#define PI 3.14159265358979323846
 
 typedef struct signal {
     float *x;
@@ -38,17 +39,17 @@ static void must(fg_result r, const char *what)
 }
 
 /* The full atmosphere of a storm. */
-static fg_propagation storm(void)
+static fg_propagation_config storm(void)
 {
-    return (fg_propagation){.refraction_radius_m = FG_REFRACTION_STORM_M,
+    return (fg_propagation_config){.refraction_radius_m = FG_REFRACTION_STORM_M,
                             .turbulence_s = FG_TURBULENCE_DEFAULT_S,
                             .absorption = FG_ABSORPTION_ISO9613,
                             .ground_reflection = FG_GROUND_DEFAULT_REFLECTION};
 }
 
 /* One discharge heard by one ear at the origin, 1.7 m up, until it ends. */
-static signal render(const fg_node *nodes, size_t count, const fg_sound_params *sound,
-                     const fg_propagation *prop, uint32_t strokes)
+static signal render(const fg_node *nodes, size_t count, const fg_sound_config *sound,
+                     const fg_propagation_config *prop, uint32_t strokes)
 {
     fg_engine_config cfg = {.sample_rate_hz = FS, .channels = 1, .speed_of_sound_m_s = C,
                             .max_block_frames = 1024, .segment_capacity = (uint32_t)(2 * count)};
@@ -61,16 +62,18 @@ static signal render(const fg_node *nodes, size_t count, const fg_sound_params *
     must(fg_engine_post(e, &d, NULL), "post");
     signal s = {0};
     size_t cap = 0;
-    fg_engine_stats st = {0};
+    fg_engine_report st = {0};
     while (st.finished == 0) {
-        if (s.n + 1024 > cap) {
-            cap = cap ? 2 * cap : 1 << 20;
-            s.x = realloc(s.x, cap * sizeof *s.x);
+        float *grown = fg_array_grow(s.x, &cap, s.n + 1024, sizeof *s.x, 1 << 20);
+        if (!grown) {
+            fprintf(stderr, "validate: out of memory\n");
+            exit(1);
         }
+        s.x = grown;
         float *plane = s.x + s.n;
         must(fg_engine_render(e, &plane, 1024), "render");
         s.n += 1024;
-        fg_engine_get_stats(e, &st);
+        fg_engine_get_report(e, &st);
     }
     fg_engine_destroy(e);
     return s;
@@ -81,7 +84,7 @@ static fg_tree *bolt(double x, double y, uint64_t seed)
 {
     fg_tree *t;
     must(fg_tree_create(16384, &t), "tree");
-    fg_lightning_params p = {.strike_m = {x, y}, .seed = seed};
+    fg_lightning_config p = {.strike_m = {x, y}, .seed = seed};
     must(fg_lightning_generate(&p, t, NULL), "lightning");
     return t;
 }
@@ -96,7 +99,7 @@ static void spectrum(const signal *s, double *psd)
     size_t frames = 0;
     for (size_t at = 0; at + WINDOW <= s->n; at += WINDOW / 2, frames++) {
         for (int k = 0; k < WINDOW; k++)
-            in[k] = s->x[at + k] * (0.5 - 0.5 * cos(2 * PI * k / WINDOW));
+            in[k] = s->x[at + k] * (0.5 - 0.5 * cos(2 * FG_PI * k / WINDOW));
         fftw_execute(plan);
         for (int k = 0; k <= WINDOW / 2; k++)
             psd[k] += creal(out[k]) * creal(out[k]) + cimag(out[k]) * cimag(out[k]);
@@ -199,9 +202,9 @@ int main(int argc, char **argv)
     checks c = {0, bench_open_result("validation.md")};
     char cpu[256];
     bench_machine(cpu, sizeof cpu);
-    fg_sound_params lightning;
+    fg_sound_config lightning;
     must(fg_preset_sound(FG_PRESET_LIGHTNING, &lightning), "preset");
-    fg_propagation air = storm();
+    fg_propagation_config air = storm();
     static double near_psd[WINDOW / 2 + 1], far_psd[WINDOW / 2 + 1];
     fprintf(c.md, "# Validation against real thunder\n\n"
                   "Written by `bench/validate` (run by `scripts/bench.sh`); %s. Every render "
@@ -222,7 +225,7 @@ int main(int argc, char **argv)
     static const double t0s[] = {500e-6, 2500e-6};
     double near_median = 0, far_median = 0, near_hz = 0, far_hz = 0;
     for (int i = 0; i < 2; i++) {
-        fg_sound_params p = lightning;
+        fg_sound_config p = lightning;
         p.t0_s = t0s[i];
         signal s[2];
         for (int j = 0; j < 2; j++) {
@@ -271,8 +274,8 @@ int main(int argc, char **argv)
     FILE *zone = bench_open_result("validation_shadow.csv");
     fprintf(zone, "height_m,level_ratio\n");
     double ratio_20 = 0, ratio_120 = 0;
-    fg_propagation bent = {.refraction_radius_m = FG_REFRACTION_STORM_M};
-    fg_propagation straight = {0};
+    fg_propagation_config bent = {.refraction_radius_m = FG_REFRACTION_STORM_M};
+    fg_propagation_config straight = {0};
     for (int h = 5; h <= 150; h += 5) {
         fg_node seg[2] = {{-1.5, 3000, h, -1, 0}, {1.5, 3000, h, 0, 0}};
         signal a = render(seg, 2, &lightning, &straight, 1), r = render(seg, 2, &lightning, &bent, 1);
@@ -324,7 +327,7 @@ int main(int argc, char **argv)
     static const fg_preset small[] = {FG_PRESET_SPARK_BALLS, FG_PRESET_PLASMA_BALL};
     static double spark_psd[2][WINDOW / 2 + 1];
     for (int i = 0; i < 2; i++) {
-        fg_sound_params p;
+        fg_sound_config p;
         fg_preset_scale scale;
         must(fg_preset_sound(small[i], &p), "preset");
         must(fg_preset_get_scale(small[i], &scale), "scale");

@@ -65,36 +65,31 @@ CTEST_EXTRA=()
 t_tsan=$((SECONDS - start - t_normal))
 
 heading "3/3 fuzz build (clang-14, libFuzzer, ASan+UBSan, build-fuzz/)"
-if [ -f tests/fuzz/CMakeLists.txt ]; then
-    cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang-14 -DFULGUR_FUZZ=ON -DFULGUR_GPU=OFF "${TEST_FLAGS[@]}"
-    [ -f build-fuzz/tests/fuzz/Makefile ] || fail "FULGUR_FUZZ=ON does not configure tests/fuzz"
-    # only the fuzz targets and what they link
-    make -C build-fuzz/tests/fuzz -j "$JOBS"
-    mapfile -t targets < <(find build-fuzz/tests/fuzz -maxdepth 1 -type f -executable | sort)
-    [ ${#targets[@]} -gt 0 ] || fail "FULGUR_FUZZ=ON built no fuzz target"
-    export UBSAN_OPTIONS="halt_on_error=1 print_stacktrace=1 ${UBSAN_OPTIONS:-}"
-    for target in "${targets[@]}"; do
-        name=$(basename "$target")
-        # seeds: tests/fuzz/corpus/<target>/, else tests/fuzz/corpus/, if present
-        seeds=()
-        for dir in "tests/fuzz/corpus/$name" tests/fuzz/corpus; do
-            if [ -d "$dir" ]; then
-                seeds=("$dir")
-                break
-            fi
-        done
-        # new inputs go to the build tree; the checked-in seeds stay as they are
-        work=build-fuzz/corpus/$name
-        mkdir -p "$work"
-        heading "3/3 fuzzing $name for ${FUZZ_SECONDS}s (seeds: ${seeds[*]:-none})"
-        "$target" -max_total_time="$FUZZ_SECONDS" -artifact_prefix=build-fuzz/ "$work" "${seeds[@]}" \
-            || fail "$name found a crash (input saved under build-fuzz/)"
-        SUMMARY+=("fuzz $name: ${FUZZ_SECONDS}s, no crash")
+cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang-14 -DFULGUR_FUZZ=ON -DFULGUR_GPU=OFF "${TEST_FLAGS[@]}"
+[ -f build-fuzz/tests/fuzz/Makefile ] || fail "FULGUR_FUZZ=ON does not configure tests/fuzz"
+# only the fuzz targets and what they link
+make -C build-fuzz/tests/fuzz -j "$JOBS"
+mapfile -t targets < <(find build-fuzz/tests/fuzz -maxdepth 1 -type f -executable | sort)
+[ ${#targets[@]} -gt 0 ] || fail "FULGUR_FUZZ=ON built no fuzz target"
+export UBSAN_OPTIONS="halt_on_error=1 print_stacktrace=1 ${UBSAN_OPTIONS:-}"
+for target in "${targets[@]}"; do
+    name=$(basename "$target")
+    # seeds: tests/fuzz/corpus/<target>/, else tests/fuzz/corpus/, if present
+    seeds=()
+    for dir in "tests/fuzz/corpus/$name" tests/fuzz/corpus; do
+        if [ -d "$dir" ]; then
+            seeds=("$dir")
+            break
+        fi
     done
-else
-    echo "tests/fuzz/CMakeLists.txt does not exist yet: no fuzz target to build or run"
-    SUMMARY+=("fuzz: no targets defined yet")
-fi
+    # new inputs go to the build tree; the checked-in seeds stay as they are
+    work=build-fuzz/corpus/$name
+    mkdir -p "$work"
+    heading "3/3 fuzzing $name for ${FUZZ_SECONDS}s (seeds: ${seeds[*]:-none})"
+    "$target" -max_total_time="$FUZZ_SECONDS" -artifact_prefix=build-fuzz/ "$work" "${seeds[@]}" \
+        || fail "$name found a crash (input saved under build-fuzz/)"
+    SUMMARY+=("fuzz $name: ${FUZZ_SECONDS}s, no crash")
+done
 t_fuzz=$((SECONDS - start - t_normal - t_tsan))
 
 heading "summary"

@@ -5,7 +5,7 @@
 #include <stddef.h>
 
 #include "fulgur/tree.h"
-#include "rng_internal.h"
+#include "fg_rng.h"
 
 /* Fills nodes[0..count) with a branching walk from root: node i continues
  * from node i-1, or, with probability branch, from a random earlier node;

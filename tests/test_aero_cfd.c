@@ -27,8 +27,8 @@
 #include <cmocka.h>
 
 #include "fulgur/aero.h"
+#include "fg_math.h"
 
-#define PI 3.14159265358979323846
 #define CYLINDER_GRID 16 /* cells per diameter at Re 100 */
 
 static double fey(double re)
@@ -43,7 +43,7 @@ static double harmonic(const fg_aero_direction *d, int comps, int comp, int k)
     double complex s = 0;
     for (uint32_t i = 0; i < d->frames; i++)
         s += d->samples[(size_t)i * comps + comp] *
-             cexp(-2.0 * PI * I * (double)k * d->periods * i / d->frames);
+             cexp(-2.0 * FG_PI * I * (double)k * d->periods * i / d->frames);
     return cabs(s) / d->frames;
 }
 

@@ -15,9 +15,9 @@
 
 #include <cmocka.h>
 
-#include "aero_texture_file.h"
+#include "common/aero_texture_file.h"
+#include "fg_math.h"
 
-#define PI 3.14159265358979323846
 
 /* A small texture by hand: a polygon with 3 directions (or a 3-D club
  * with 3 sources), samples a known function. */
@@ -32,7 +32,7 @@ static fg_aero_texture *make(int club)
         uint32_t frames = 40 + 5 * i;
         for (uint32_t k = 0; k < frames * sources * comps; k++)
             samples[i][k] = (float)(sin(0.37 * k + i) * 1e-3 * (k % 7));
-        dir[i] = (fg_aero_direction){.angle_rad = i * 5.0 * PI / 180.0, .frontal_m = 0.004,
+        dir[i] = (fg_aero_direction){.angle_rad = i * 5.0 * FG_PI / 180.0, .frontal_m = 0.004,
                                      .frequency_hz = 500 + i, .strouhal = 0.2 + 0.001 * i,
                                      .lift_amplitude = 0.7, .drag_mean = 1.9,
                                      .transient_s = 0.06, .periods = 4, .frames = frames,

@@ -14,9 +14,9 @@
 
 #include "aero/aero_internal.h"
 #include "fulgur/aero.h"
+#include "fg_math.h"
 
-#define PI 3.14159265358979323846
-#define DEG (PI / 180.0)
+#define DEG (FG_PI / 180.0)
 
 static float zeros[4 * 64 * 3];
 
@@ -52,7 +52,7 @@ static void check_lookup(const fg_aero_texture *t, double angle_deg, double at_d
     double a = l.weight[0] * d->direction[l.index[0]].angle_rad +
                l.weight[1] * d->direction[l.index[1]].angle_rad;
     if (l.index[1] < l.index[0]) /* across the wrap of a periodic range */
-        a += l.weight[1] * 2.0 * PI / d->rotation_order;
+        a += l.weight[1] * 2.0 * FG_PI / d->rotation_order;
     if (fabs(a / DEG - at_deg) > 1e-6 || l.lift_sign != sign ||
         fabs(l.weight[0] + l.weight[1] - 1.0f) > 1e-6f)
         fail_msg("%g deg: read at %g deg (sign %g), expected %g deg (sign %g)", angle_deg,
@@ -161,7 +161,7 @@ static void texture_checks(void **state)
         case 13: dir[4].samples = bad_sample; want = FG_ERR_NOT_FINITE; break;
         case 14: dir[4].samples = NULL; want = FG_ERR_NULL; break;
         case 15: d.rotation_order = 13; break;
-        case 16: d.mirror_angle_rad = PI; break;                      /* beyond pi / 4 */
+        case 16: d.mirror_angle_rad = FG_PI; break;                      /* beyond pi / 4 */
         case 17: d.height_m = 0; break;
         case 18: dir[2].periods = 0; break;
         }
@@ -341,7 +341,7 @@ static void club(void **state)
     assert_float_equal(b.reference_m, 0.06, 1e-15);
     double trapezoid = (r0 + r1) * cs * (len - (r1 - r0) * s);
     double segment_a = r0 * r0 * (acos(s) - s * cs);              /* the smaller segment */
-    double segment_b = PI * r1 * r1 - r1 * r1 * (acos(s) - s * cs); /* the larger one */
+    double segment_b = FG_PI * r1 * r1 - r1 * r1 * (acos(s) - s * cs); /* the larger one */
     double exact = trapezoid + segment_a + segment_b;
     double area = fg_aero_body_area(&b);
     print_message("club silhouette %.6e m^2, exact %.6e (%+.4f %%)\n", area, exact,
@@ -357,7 +357,7 @@ static void club(void **state)
  * mean); the drag at 2 f0. */
 static double signal(double t, double f0, int drag)
 {
-    double w = 2.0 * PI * f0 * t;
+    double w = 2.0 * FG_PI * f0 * t;
     if (drag)
         return 1.3 + 0.05 * cos(2.0 * w + 0.3);
     return 0.33 * sin(w) + 0.02 * sin(3.0 * w + 1.0) + 0.004 * sin(0.137 * w) +
@@ -394,7 +394,7 @@ static void period_and_loop(void **state)
                   seam / inside);
     assert_true(seam <= 1.5 * inside);
     /* g is the derivative: past the fade, close to the exact one */
-    double worst = 0.0, w = 2.0 * PI * f0;
+    double worst = 0.0, w = 2.0 * FG_PI * f0;
     for (uint32_t i = loop.fade + 1; i + 1 < loop.frames; i++) {
         double t = i / rate, exact = 0.33 * w * cos(w * t) + 0.06 * w * cos(3 * w * t + 1.0) +
                                      0.004 * 0.137 * w * cos(0.137 * w * t) +
@@ -487,7 +487,7 @@ static void quiet(void **state)
     assert_true(d->frames > 0 && d->drag_mean > 1.5); /* a steady drag; 2.3 at 6 cells/D
                                                           between close walls */
     /* g of the lift: against what a shedding cylinder's would be, 2 pi f L */
-    double q = 0.5 * 1.204 * v0 * v0 * D, shedding = 2 * PI * 0.2 * v0 / D * 0.3 * q, most = 0;
+    double q = 0.5 * 1.204 * v0 * v0 * D, shedding = 2 * FG_PI * 0.2 * v0 / D * 0.3 * q, most = 0;
     for (uint32_t i = 0; i < d->frames; i++)
         most = fmax(most, fabs(d->samples[2 * i + 1]));
     print_message("quiet: drag %.3f, largest lift g %.3g of a shedding one's\n", d->drag_mean,

@@ -10,7 +10,7 @@
 
 #include <cmocka.h>
 
-#include "air_absorption_internal.h"
+#include "air/air_absorption_internal.h"
 
 typedef struct formula_case {
     double f_hz;

@@ -7,7 +7,7 @@
 
 #include <cmocka.h>
 
-#include "charges_internal.h"
+#include "growth/charges_internal.h"
 #include "fulgur/charges.h"
 
 /* A cloud: negative charge region above a positive one, and the ground's
@@ -18,13 +18,13 @@ static const fg_point_charge cloud[] = {
     {{0, 0, -600}, 2.0},
 };
 
-static fg_charges_params cloud_params(uint64_t seed)
+static fg_charges_config cloud_params(uint64_t seed)
 {
-    return (fg_charges_params){
+    return (fg_charges_config){
         .charges = cloud, .charge_count = 3, .start_m = {0, 0, 550}, .step_m = 3, .seed = seed};
 }
 
-static fg_tree *grow(const fg_charges_params *p)
+static fg_tree *grow(const fg_charges_config *p)
 {
     fg_tree *t;
     assert_int_equal(fg_tree_create(0, &t), FG_OK);
@@ -51,7 +51,7 @@ static void reaches_ground_main_connected(void **state)
 {
     (void)state;
     for (uint64_t seed = 1; seed <= 5; seed++) {
-        fg_charges_params p = cloud_params(seed);
+        fg_charges_config p = cloud_params(seed);
         fg_tree *t = grow(&p);
         const fg_node *n = fg_tree_nodes(t);
         size_t count = fg_tree_count(t), ground = count, flagged = 0;
@@ -81,7 +81,7 @@ static void sphere_target(void **state)
 {
     (void)state;
     /* intracloud: from between the regions up to the positive one */
-    fg_charges_params p = cloud_params(9);
+    fg_charges_config p = cloud_params(9);
     p.start_m[2] = 700;
     p.target_m[0] = 0, p.target_m[1] = 0, p.target_m[2] = 900;
     p.target_radius_m = 20;
@@ -99,7 +99,7 @@ static void sphere_target(void **state)
 static void seeded_runs_identical(void **state)
 {
     (void)state;
-    fg_charges_params p = cloud_params(42);
+    fg_charges_config p = cloud_params(42);
     fg_tree *a = grow(&p), *b = grow(&p);
     p.seed = 43;
     fg_tree *c = grow(&p);
@@ -171,7 +171,7 @@ static void exclusion_radius(void **state)
         assert_true(chosen[0] == 2 || chosen[1] == 2);
     }
     /* In grown trees: siblings (all drawn in one round) are R apart. */
-    fg_charges_params p = cloud_params(5);
+    fg_charges_config p = cloud_params(5);
     p.candidates = 16, p.chosen = 4, p.exclusion_m = 4.0;
     fg_tree *t = grow(&p);
     const fg_node *n = fg_tree_nodes(t);
@@ -192,7 +192,7 @@ static void bad_input(void **state)
     const fg_point_charge nan_q[] = {{{0, 0, 600}, NAN}};
     struct {
         const char *what;
-        fg_charges_params p;
+        fg_charges_config p;
         fg_result want;
     } cases[] = {
         {"no charges", {.charges = cloud, .charge_count = 0, .start_m = {0, 0, 550}},
@@ -227,17 +227,17 @@ static void bad_input(void **state)
     fg_tree *t;
     assert_int_equal(fg_tree_create(0, &t), FG_OK);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        fg_charges_params out;
+        fg_charges_config out;
         memset(&out, 0xA5, sizeof out);
-        fg_charges_params before = out;
-        if (fg_charges_params_resolve(&cases[i].p, &out) != cases[i].want)
+        fg_charges_config before = out;
+        if (fg_charges_config_resolve(&cases[i].p, &out) != cases[i].want)
             fail_msg("%s: resolve", cases[i].what);
         assert_memory_equal(&out, &before, sizeof out);
         if (fg_charges_grow(&cases[i].p, t) != cases[i].want)
             fail_msg("%s: grow", cases[i].what);
         assert_int_equal(fg_tree_count(t), 0);
     }
-    fg_charges_params p = cloud_params(1);
+    fg_charges_config p = cloud_params(1);
     assert_int_equal(fg_charges_grow(&p, NULL), FG_ERR_NULL);
     assert_int_equal(fg_charges_grow(NULL, t), FG_ERR_NULL);
     /* a tree that is not empty is refused and kept */

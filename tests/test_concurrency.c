@@ -74,7 +74,7 @@ static void test_post_while_rendering(void **state)
 {
     (void)state;
     fg_engine_config cfg;
-    fg_engine_config_default(&cfg);
+    assert_int_equal(fg_engine_config_resolve(NULL, &cfg), FG_OK);
     cfg.max_block_frames = BLOCK;
     fg_engine *e;
     assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
@@ -86,21 +86,21 @@ static void test_post_while_rendering(void **state)
     float left[BLOCK], right[BLOCK], *planes[2] = {left, right};
     double energy = 0;
     uint64_t blocks = 0, drain = 0;
-    fg_engine_stats st;
+    fg_engine_report st;
     for (;;) {
         assert_int_equal(fg_engine_render(e, planes, BLOCK), FG_OK);
         blocks++;
         energy += fx_energy(left, 0, BLOCK) + fx_energy(right, 0, BLOCK);
         if (!atomic_load_explicit(&p.done, memory_order_acquire))
             continue;
-        fg_engine_get_stats(e, &st);
+        fg_engine_get_report(e, &st);
         if (st.finished == st.posted || ++drain > DRAIN_BLOCKS)
             break;
     }
     assert_int_equal(pthread_join(th, NULL), 0);
     /* the producer has ended: this thread is the sim thread now */
     p.collected += fg_engine_collect(e);
-    fg_engine_get_stats(e, &st);
+    fg_engine_get_report(e, &st);
     print_message("%llu attempts, %llu posted, %llu refused, %llu nodes, %llu blocks, "
                   "energy %.3g Pa^2\n",
                   (unsigned long long)p.attempts, (unsigned long long)p.posted,

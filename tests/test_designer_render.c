@@ -1,5 +1,5 @@
 /* Designer thunder through the engine, measured from the rendered sound: a
- * clap block is the loudest moment at its designed time, its stretch alone
+ * clap feature is the loudest moment at its designed time, its stretch alone
  * sounds for a few milliseconds, a rumble's stretch for about its length / c,
  * and a roar's stretch is louder per metre than the plain channel. */
 #include <math.h>
@@ -17,17 +17,17 @@
 #define WINDOW 240 /* 10 ms */
 
 static const double skeleton[] = {0, 0, 5000, 0, 0, 0};
-static const fg_thunder_block blocks[] = {{FG_THUNDER_ROAR, 0.1, 0.25, 1},
+static const fg_thunder_feature features[] = {{FG_THUNDER_ROAR, 0.1, 0.25, 1},
                                           {FG_THUNDER_CLAP, 0.3, 0.45, 1},
                                           {FG_THUNDER_RUMBLE, 0.55, 0.8, 1}};
 static const double listener[3] = {3000, 0, 1.7};
 
-static fg_tree *design(size_t block_count, fg_lightning_info *info)
+static fg_tree *design(size_t feature_count, fg_lightning_report *info)
 {
-    fg_lightning_params lp = {.skeleton_m = skeleton,
+    fg_lightning_config lp = {.skeleton_m = skeleton,
                               .skeleton_points = 2,
-                              .blocks = blocks,
-                              .block_count = block_count,
+                              .features = features,
+                              .feature_count = feature_count,
                               .listener_m = {listener[0], listener[1], listener[2]},
                               .seed = 2026};
     fg_tree *tree;
@@ -53,16 +53,16 @@ static double *render_energy(const fg_node *nodes, size_t count, double seconds,
     size_t n = (size_t)(seconds * RATE);
     n += BLOCK - n % BLOCK;
     double *energy = malloc((n + 1) * sizeof *energy);
-    float block[BLOCK], *plane[1] = {block};
+    float feature[BLOCK], *plane[1] = {feature};
     assert_non_null(energy);
     energy[0] = 0;
     for (size_t at = 0; at < n; at += BLOCK) {
         assert_int_equal(fg_engine_render(e, plane, BLOCK), FG_OK);
         for (size_t i = 0; i < BLOCK; i++)
-            energy[at + i + 1] = energy[at + i] + (double)block[i] * block[i] / RATE;
+            energy[at + i + 1] = energy[at + i] + (double)feature[i] * feature[i] / RATE;
     }
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     assert_int_equal(st.late_events, 0);
     fg_engine_destroy(e);
     *frames = n;
@@ -96,9 +96,9 @@ static double energy_duration_s(const double *e, size_t frames)
 static void clap_heard_at_designed_time(void **state)
 {
     (void)state;
-    fg_lightning_info info;
+    fg_lightning_report info;
     fg_tree *tree = design(3, &info);
-    double designed_s = info.blocks[1].distance_m / 343.0;
+    double designed_s = info.features[1].distance_m / 343.0;
     size_t frames;
     double *e = render_energy(fg_tree_nodes(tree), fg_tree_count(tree), designed_s + 1.5, &frames);
     /* the loudest 10 ms of the whole sound, in 1 ms steps */
@@ -120,20 +120,20 @@ static void clap_heard_at_designed_time(void **state)
 static void stretches_sound_as_designed(void **state)
 {
     (void)state;
-    fg_lightning_info info, plain_info;
+    fg_lightning_report info, plain_info;
     fg_tree *tree = design(3, &info), *plain = design(0, &plain_info);
     const fg_node *n = fg_tree_nodes(tree);
     size_t count, frames;
 
     /* clap: its 750 m of channel sound within a few ms */
-    fg_node *clap = stretch(n, &info.blocks[1], &count);
+    fg_node *clap = stretch(n, &info.features[1], &count);
     double *e = render_energy(clap, count, 15, &frames);
     assert_true(energy_duration_s(e, frames) < 0.005);
     free(e);
     free(clap);
 
     /* rumble: 1250 m nearly end-on, heard for about 1250 m / c = 3.6 s */
-    fg_node *rumble = stretch(n, &info.blocks[2], &count);
+    fg_node *rumble = stretch(n, &info.features[2], &count);
     e = render_energy(rumble, count, 15, &frames);
     double rumble_s = energy_duration_s(e, frames);
     assert_true(rumble_s > 0.6 * 1250 / 343.0 && rumble_s < 1.2 * 1250 / 343.0);
@@ -143,7 +143,7 @@ static void stretches_sound_as_designed(void **state)
     /* roar: more sound per segment than the same stretch of a plain walk
      * (its sharper kinks cancel less between neighbours) */
     size_t roar_n, plain_n, f2;
-    fg_node *roar = stretch(n, &info.blocks[0], &roar_n);
+    fg_node *roar = stretch(n, &info.features[0], &roar_n);
     e = render_energy(roar, roar_n, 18, &frames);
     fg_lightning_stretch same = {0, 0, 0};
     for (size_t i = 1; i < plain_info.main_nodes; i++) { /* heights 4500 .. 3750 m */

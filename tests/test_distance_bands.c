@@ -9,7 +9,7 @@
 
 #include <cmocka.h>
 
-#include "distance_bands_internal.h"
+#include "air/distance_bands_internal.h"
 
 static void test_centres(void **state)
 {

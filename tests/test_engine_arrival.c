@@ -67,7 +67,7 @@ static void ear_at(uint32_t channels, int k, double out[3])
 }
 
 /* Eq. 3 and 4 at distance r. */
-static void n_wave_at(const fg_sound_params *p, double r, double *t_half, double *ps)
+static void n_wave_at(const fg_sound_config *p, double r, double *t_half, double *ps)
 {
     double rr = r > p->r0_m ? r : p->r0_m;
     double stretch = sqrt(1.0 + p->sigma0 * log(rr / p->r0_m));

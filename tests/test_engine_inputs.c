@@ -6,6 +6,7 @@
  * call (one given the same valid history). */
 #include <setjmp.h>
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -421,7 +422,7 @@ static const input_case cases[] = {
 };
 
 /* blocks_over_budget depends on the machine's speed: not compared */
-static void stats_equal(const char *name, const char *when, fg_engine_stats a, fg_engine_stats b)
+static void stats_equal(const char *name, const char *when, fg_engine_report a, fg_engine_report b)
 {
     a.blocks_over_budget = b.blocks_over_budget = 0;
     CHECK(memcmp(&a, &b, sizeof a) == 0,
@@ -456,9 +457,9 @@ static void test_sweep(void **state)
         CHECK(got == ic->want, "%s: returned %d (%s), documented %d (%s)", ic->name, got,
               fg_result_str(got), ic->want, fg_result_str(ic->want));
 
-        fg_engine_stats sa, sb;
-        fg_engine_get_stats(a, &sa);
-        fg_engine_get_stats(b, &sb);
+        fg_engine_report sa, sb;
+        fg_engine_get_report(a, &sa);
+        fg_engine_get_report(b, &sb);
         sb.dropped_posts += ic->dropped;
         stats_equal(ic->name, "after the bad call", sa, sb);
         CHECK(fg_engine_frames(a) == fg_engine_frames(b), "%s: the clock moved", ic->name);
@@ -479,8 +480,8 @@ static void test_sweep(void **state)
         CHECK(fx_peak(out_b[0], REF_BLOCKS * BLOCK) > 0, "%s: the reference is silent", ic->name);
         CHECK(memcmp(out_a, out_b, sizeof out_a) == 0, "%s: output differs from a fresh engine",
               ic->name);
-        fg_engine_get_stats(a, &sa);
-        fg_engine_get_stats(b, &sb);
+        fg_engine_get_report(a, &sa);
+        fg_engine_get_report(b, &sb);
         sb.dropped_posts += ic->dropped;
         stats_equal(ic->name, "after the next render", sa, sb);
         fg_engine_destroy(a);
@@ -521,6 +522,19 @@ static const create_case create_cases[] = {
     {"look-ahead -1", 48000, 2, 256, 343, 0, -1, FG_ERR_ARGUMENT, 0, 0},
 };
 
+/* Field by field: a struct's padding is no part of its value. */
+static bool same_config(const fg_engine_config *a, const fg_engine_config *b)
+{
+    return a->sample_rate_hz == b->sample_rate_hz && a->max_block_frames == b->max_block_frames &&
+           a->channels == b->channels && a->max_voices == b->max_voices &&
+           a->segment_capacity == b->segment_capacity &&
+           a->speed_of_sound_m_s == b->speed_of_sound_m_s &&
+           a->ear_spacing_m == b->ear_spacing_m && a->max_lookahead_s == b->max_lookahead_s &&
+           a->max_adopt_per_block == b->max_adopt_per_block &&
+           a->air_temperature_k == b->air_temperature_k &&
+           a->air_humidity_pct == b->air_humidity_pct && a->air_pressure_kpa == b->air_pressure_kpa;
+}
+
 static void test_create(void **state)
 {
     (void)state;
@@ -549,9 +563,9 @@ static void test_create(void **state)
     assert_int_equal(fg_engine_create(NULL, &e), FG_OK);
     fg_engine_config used, dflt;
     fg_engine_get_config(e, &used);
-    fg_engine_config_default(&dflt);
+    assert_int_equal(fg_engine_config_resolve(NULL, &dflt), FG_OK);
     fg_engine_destroy(e);
-    CHECK(memcmp(&used, &dflt, sizeof used) == 0, "create(NULL) differs from the defaults");
+    CHECK(same_config(&used, &dflt), "create(NULL) differs from the defaults");
     const fg_engine_config documented = {
         .sample_rate_hz = 48000, .max_block_frames = 4096, .channels = 2, .max_voices = 64,
         .segment_capacity = 131072, .speed_of_sound_m_s = 343, .ear_spacing_m = 0.18,
@@ -569,10 +583,21 @@ static void test_create(void **state)
           "default segment_capacity %u, engine.h documents %u", dflt.segment_capacity,
           documented.segment_capacity);
 
-    /* the no-ops on NULL */
+    /* resolve: the defaults for zero fields, errors as create's, *out
+     * untouched on error */
+    fg_engine_config some = {.sample_rate_hz = 44100, .channels = 1}, got;
+    assert_int_equal(fg_engine_config_resolve(&some, &got), FG_OK);
+    CHECK(got.sample_rate_hz == 44100 && got.channels == 1 &&
+              got.max_block_frames == dflt.max_block_frames && got.max_voices == dflt.max_voices,
+          "resolve kept %g Hz, %u channels, filled %u frames", got.sample_rate_hz, got.channels,
+          got.max_block_frames);
+    fg_engine_config bad = {.sample_rate_hz = 1000}, untouched = got;
+    assert_int_equal(fg_engine_config_resolve(&bad, &got), FG_ERR_SAMPLE_RATE);
+    CHECK(same_config(&got, &untouched), "a failed resolve wrote *out");
+    assert_int_equal(fg_engine_config_resolve(NULL, NULL), FG_ERR_NULL);
+
+    /* the no-op on NULL */
     fg_engine_destroy(NULL);
-    CHECK(fg_engine_collect(NULL) == 0, "collect(NULL) reclaimed something");
-    CHECK(fg_engine_frames(NULL) == 0, "frames(NULL) is not 0");
 }
 
 int main(void)

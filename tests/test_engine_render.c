@@ -13,7 +13,8 @@
 #include <cmocka.h>
 
 #include "fulgur/fulgur.h"
-#include "wmwave_internal.h"
+#include "sound/wmwave_internal.h"
+#include "wm_reference.h"
 
 #define FS 48000.0
 #define C 343.0
@@ -22,7 +23,7 @@
 
 typedef struct scene {
     fg_node nodes[NODES];
-    fg_sound_params sound;
+    fg_sound_config sound;
     double emit_s;
 } scene;
 
@@ -74,11 +75,11 @@ static void add_segment(const scene *s, int i, const double e[3], double first, 
     double d[3] = {e[0] - mid[0], e[1] - mid[1], e[2] - mid[2]};
     double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     double sn = fabs(d[0] * (a->x - b->x) + d[1] * (a->y - b->y) + d[2] * (a->z - b->z)) / (len * r);
-    wm_shape w = wm_shape_at(&s->sound, s->sound.t0_s, r, sn, len / 2, C, NULL);
+    fg_wm_shape w = fg_wm_shape_at(&s->sound, s->sound.t0_s, r, sn, len / 2, C, NULL);
     double emit = s->emit_s + 0.5 * (to_strike(s, i) + to_strike(s, s->nodes[i].parent)) /
                                   s->sound.return_stroke_speed_m_s;
-    wm_event ev = {w, (emit + r / C) * FS - first, FS * (len / 2) / C};
-    wm_add_direct(&ev, out, n);
+    fg_wm_event ev = {w, (emit + r / C) * FS - first, FS * (len / 2) / C};
+    ref_wm_add_direct(&ev, out, n);
 }
 
 static void ears_of(const fg_listener *p, double ears[2][3])
@@ -139,8 +140,8 @@ static void run(uint32_t block, int moving)
         }
     assert_true(peak > 1e-3);
     assert_true(err <= 1e-5 * peak);
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     assert_int_equal(st.late_events, 0);
     assert_int_equal(st.finished, 1);
     fg_engine_destroy(e);

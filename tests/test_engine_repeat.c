@@ -82,9 +82,9 @@ static void test_continuous(void **state)
         size_t stop_frame = rc->stop_at_s > 0 ? (size_t)(fs * rc->stop_at_s) : frames;
         float *planes[2] = {x, NULL};
         fx_render(e, planes, 1, stop_frame, rc->block);
-        fg_engine_stats st;
+        fg_engine_report st;
         if (rc->stop_at_s > 0) {
-            fg_engine_get_stats(e, &st);
+            fg_engine_get_report(e, &st);
             CHECK(st.finished == 0, "%s: finished before stop", rc->name);
             assert_int_equal(fg_engine_stop(e, id), FG_OK);
             float *tail[2] = {x + stop_frame, NULL};
@@ -125,7 +125,7 @@ static void test_continuous(void **state)
         size_t quiet_from = (size_t)(fs * (last_allowed + 0.005));
         for (size_t k = quiet_from; k < frames; k++)
             CHECK(x[k] == 0.0f, "%s: %.3g Pa at %.4f s after the end", rc->name, x[k], k / fs);
-        fg_engine_get_stats(e, &st);
+        fg_engine_get_report(e, &st);
         CHECK(st.finished == 1 && st.adopted == 1, "%s: finished %llu adopted %llu", rc->name,
               (unsigned long long)st.finished, (unsigned long long)st.adopted);
         CHECK(fg_engine_collect(e) == 1, "%s: nothing to collect", rc->name);
@@ -181,8 +181,8 @@ static double render_energy(const fg_node *nodes, size_t count, uint32_t strokes
     assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
     float *planes[2] = {x, NULL};
     fx_render(e, planes, 1, frames, 1000);
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     assert_int_equal(st.finished, 1);
     fg_engine_destroy(e);
     return fx_energy(x, 0, frames);
@@ -268,8 +268,8 @@ static void test_stop_lightning(void **state)
         size_t n = fx_onsets(x, frames, 1e-4f * peak, (size_t)(0.005 * fs), on, 64);
         CHECK(n == 1 && on[0] < stop_frame, "seed %llu: %zu bursts after stop",
               (unsigned long long)seed, n);
-        fg_engine_stats st;
-        fg_engine_get_stats(e, &st);
+        fg_engine_report st;
+        fg_engine_get_report(e, &st);
         CHECK(st.finished == 1, "seed %llu: not retired after stop", (unsigned long long)seed);
         fg_engine_destroy(e);
     }

@@ -10,7 +10,7 @@
 
 #include <cmocka.h>
 
-#include "field_internal.h"
+#include "field/field_internal.h"
 #include "fulgur/field.h"
 
 static fg_field *make(int n, double lo, double hi)

@@ -16,15 +16,15 @@
 #include <cmocka.h>
 
 #include "fluid/fluid_internal.h"
+#include "fg_math.h"
 
-#define PI 3.14159265358979323846
 
 /* Energy decay rate over t = 2 divided by 4 nu, and the largest velocity
  * error against exp(-2 nu t) sin x cos y. dims 3: the same field, uniform
  * along z, in a slab of depth cells. */
 static void taylor_green(int dims, int n, double nu, double cfl, double *ratio, double *error)
 {
-    double h = PI / n, T = 2.0;
+    double h = FG_PI / n, T = 2.0;
     fg_fluid_config c = {.dims = dims,
                          .cells = {n, n, 4},
                          .cell_m = h,
@@ -108,7 +108,7 @@ static double rotate_blob(int semi_lagrangian, double *peak, double *mass_change
                          .boundary = {{FG_FLUID_OPEN, FG_FLUID_OPEN}, {FG_FLUID_OPEN, FG_FLUID_OPEN}}};
     fg_fluid *f = NULL;
     assert_int_equal(fg_fluid_create(&c, &f), FG_OK);
-    double omega = 2.0 * PI; /* one turn a second */
+    double omega = 2.0 * FG_PI; /* one turn a second */
     for (int a = 0; a < 2; a++) {
         fg_fluid_array u = fg_fluid_velocity(f, a);
         for (int j = 0; j < u.size[1]; j++)

@@ -12,8 +12,8 @@
 #include <cmocka.h>
 
 #include "fluid/fluid_internal.h"
+#include "fg_math.h"
 
-#define PI 3.14159265358979323846
 
 typedef struct ball {
     double centre[3], radius;
@@ -140,8 +140,8 @@ static void archimedes(void **state)
         assert_int_equal(fg_fluid_project(f, dt, NULL), FG_OK);
         fg_fluid_force F;
         fg_fluid_solid_force(f, NULL, NULL, &F);
-        double volume = dims == 2 ? PI * b.radius * b.radius
-                                  : 4.0 / 3.0 * PI * b.radius * b.radius * b.radius;
+        double volume = dims == 2 ? FG_PI * b.radius * b.radius
+                                  : 4.0 / 3.0 * FG_PI * b.radius * b.radius * b.radius;
         double expect = 1000.0 * G * volume;
         print_message("dims %d, %d cells across: buoyancy %.6g N, expected %.6g N (%+.3f %%)\n",
                       dims, n, F.pressure_n[1], expect, 100 * (F.pressure_n[1] / expect - 1));

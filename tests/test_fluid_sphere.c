@@ -14,8 +14,8 @@
 #include <cmocka.h>
 
 #include "fluid/fluid_internal.h"
+#include "fg_math.h"
 
-#define PI 3.14159265358979323846
 
 static double sphere_sdf(const double x[3], void *user)
 {
@@ -37,7 +37,7 @@ static void sphere_drag(void **state)
     fg_fluid *f = NULL;
     assert_int_equal(fg_fluid_create(&c, &f), FG_OK);
     assert_int_equal(fg_fluid_set_solid(f, sphere_sdf, NULL), FG_OK);
-    double dt = 0.5 * c.cell_m, q = 0.5 * PI * 0.25; /* rho v^2 / 2 times the frontal area */
+    double dt = 0.5 * c.cell_m, q = 0.5 * FG_PI * 0.25; /* rho v^2 / 2 times the frontal area */
     double cd_then = 0.0;
     for (int s = 0; s < (int)(12.0 / dt); s++) {
         assert_int_equal(fg_fluid_step(f, dt, NULL), FG_OK);

@@ -9,11 +9,11 @@
 
 #include <cmocka.h>
 
-#include "generator_field.h"
+#include "scene/generator.h"
 
 static const gen_context ctx = {.seed = 11, .listener_m = {0, -1, 0}};
 
-static int run(gen_fn fn, const char *json, fg_tree *t, char *err, size_t size)
+static int run(gen_fn *fn, const char *json, fg_tree *t, char *err, size_t size)
 {
     cJSON *spec = cJSON_Parse(json);
     assert_non_null(spec);
@@ -107,7 +107,7 @@ static void errors_name_the_path(void **state)
 {
     (void)state;
     static const struct {
-        gen_fn fn;
+        gen_fn *fn;
         const char *json, *err;
     } cases[] = {
         {gen_spark_gap, "{\"size\":300}", "discharges[0].generator.size: must be an integer in 9..257"},

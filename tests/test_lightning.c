@@ -7,15 +7,16 @@
 
 #include <cmocka.h>
 
+#include "fg_math.h"
 #include "fulgur/lightning.h"
 
-#define DEG (3.14159265358979323846 / 180)
+#define DEG (FG_PI / 180)
 
 /* A straight vertical 5 km skeleton over the origin. */
 static const double vertical[] = {0, 0, 5000, 0, 0, 0};
 static const double listener[3] = {3000, 0, 1.7};
 
-static fg_tree *generate(const fg_lightning_params *p, fg_lightning_info *info)
+static fg_tree *generate(const fg_lightning_config *p, fg_lightning_report *info)
 {
     fg_tree *t;
     assert_int_equal(fg_tree_create(0, &t), FG_OK);
@@ -56,8 +57,8 @@ static void preset_reaches_ground(void **state)
     double total = 0;
     enum { RUNS = 10 };
     for (uint64_t seed = 1; seed <= RUNS; seed++) {
-        fg_lightning_params p = {.strike_m = {100, -200}, .seed = seed};
-        fg_lightning_info info;
+        fg_lightning_config p = {.strike_m = {100, -200}, .seed = seed};
+        fg_lightning_report info;
         fg_tree *t = generate(&p, &info);
         const fg_node *n = fg_tree_nodes(t);
         size_t count = fg_tree_count(t);
@@ -86,10 +87,10 @@ static void preset_reaches_ground(void **state)
 static void seeded_identical(void **state)
 {
     (void)state;
-    const fg_thunder_block blocks[] = {{FG_THUNDER_CLAP, 0.3, 0.4, 1}};
-    fg_lightning_params p = {.seed = 77,
-                             .blocks = blocks,
-                             .block_count = 1,
+    const fg_thunder_feature features[] = {{FG_THUNDER_CLAP, 0.3, 0.4, 1}};
+    fg_lightning_config p = {.seed = 77,
+                             .features = features,
+                             .feature_count = 1,
                              .listener_m = {3000, 0, 1.7}};
     fg_tree *a = generate(&p, NULL), *b = generate(&p, NULL);
     p.seed = 78;
@@ -111,13 +112,13 @@ static void segment_and_turn_statistics(void **state)
     double sum = 0, sum2 = 0, max_off = 0;
     size_t turns = 0;
     for (uint64_t seed = 1; seed <= 6; seed++) {
-        fg_lightning_params p = {.skeleton_m = vertical,
+        fg_lightning_config p = {.skeleton_m = vertical,
                                  .skeleton_points = 2,
                                  .segment_m = 2.5,
                                  .turn_mean_deg = 12,
                                  .branch_probability = -1,
                                  .seed = seed};
-        fg_lightning_info info;
+        fg_lightning_report info;
         fg_tree *t = generate(&p, &info);
         const fg_node *n = fg_tree_nodes(t);
         assert_int_equal(info.main_nodes, fg_tree_count(t)); /* no branches */
@@ -140,7 +141,7 @@ static void segment_and_turn_statistics(void **state)
     double mean = sum / turns, rms = sqrt(sum2 / turns);
     /* half-normal of mean m: rms = m sqrt(pi / 2); standard error ~0.1 deg */
     assert_float_equal(mean / DEG, 12.0, 0.5);
-    assert_float_equal(rms / DEG, 12.0 * sqrt(3.14159265358979 / 2), 0.6);
+    assert_float_equal(rms / DEG, 12.0 * sqrt(FG_PI / 2), 0.6);
     /* tortuous, yet it follows the skeleton */
     assert_true(max_off > 5 && max_off < 150);
 }
@@ -151,13 +152,13 @@ static void branch_statistics(void **state)
     (void)state;
     size_t branches = 0, measured = 0, branch_nodes = 0, main_nodes = 0;
     for (uint64_t seed = 1; seed <= 30; seed++) {
-        fg_lightning_params p = {.skeleton_m = vertical,
+        fg_lightning_config p = {.skeleton_m = vertical,
                                  .skeleton_points = 2,
                                  .branch_probability = 0.01,
                                  .branch_length_m = 150,
                                  .branch_depth = 1,
                                  .seed = seed};
-        fg_lightning_info info;
+        fg_lightning_report info;
         fg_tree *t = generate(&p, &info);
         const fg_node *n = fg_tree_nodes(t);
         size_t count = fg_tree_count(t);
@@ -190,23 +191,23 @@ static void branch_statistics(void **state)
 static void clap_rumble_roar(void **state)
 {
     (void)state;
-    const fg_thunder_block blocks[] = {{FG_THUNDER_CLAP, 0.3, 0.5, 1},
+    const fg_thunder_feature features[] = {{FG_THUNDER_CLAP, 0.3, 0.5, 1},
                                        {FG_THUNDER_RUMBLE, 0.6, 0.8, 1},
                                        {FG_THUNDER_ROAR, 0.85, 1.0, 1}};
     for (uint64_t seed = 1; seed <= 4; seed++) {
-        fg_lightning_params p = {.skeleton_m = vertical,
+        fg_lightning_config p = {.skeleton_m = vertical,
                                  .skeleton_points = 2,
-                                 .blocks = blocks,
-                                 .block_count = 3,
+                                 .features = features,
+                                 .feature_count = 3,
                                  .listener_m = {listener[0], listener[1], listener[2]},
                                  .seed = seed};
-        fg_lightning_info info;
+        fg_lightning_report info;
         fg_tree *t = generate(&p, &info);
         const fg_node *n = fg_tree_nodes(t);
         assert_float_equal(n[info.main_nodes - 1].z, 0, 1e-9); /* still strikes the ground */
 
         /* clap: an arc about the listener through the skeleton at 0.3 */
-        const fg_lightning_stretch *c = &info.blocks[0];
+        const fg_lightning_stretch *c = &info.features[0];
         double radius = len3(listener[0], listener[1], 3500 - listener[2]);
         assert_float_equal(c->distance_m, radius, 1e-6);
         size_t on = 0, nodes = c->last_node - c->first_node + 1;
@@ -216,7 +217,7 @@ static void clap_rumble_roar(void **state)
         assert_true(on >= 0.9 * nodes);
 
         /* rumble: nearly end-on, so the distance spans most of its length */
-        const fg_lightning_stretch *r = &info.blocks[1];
+        const fg_lightning_stretch *r = &info.features[1];
         const fg_node *a = &n[r->first_node], *b = &n[r->last_node];
         double chord[3] = {b->x - a->x, b->y - a->y, b->z - a->z};
         double rad[3] = {a->x - listener[0], a->y - listener[1], a->z - listener[2]};
@@ -227,7 +228,7 @@ static void clap_rumble_roar(void **state)
 
         /* roar: the mean turn is 16 (1 + 3) = 64 degrees (turns past 180
          * fold back, so a little less is measured) */
-        const fg_lightning_stretch *o = &info.blocks[2];
+        const fg_lightning_stretch *o = &info.features[2];
         double sum = 0;
         size_t turns = 0;
         for (size_t i = o->first_node + 1; i + 6 < o->last_node; i++, turns++)
@@ -245,18 +246,18 @@ static void bad_input(void **state)
     const double underground[] = {0, 0, 100, 0, 0, -5};
     const double repeated[] = {0, 0, 100, 0, 0, 100, 0, 0, 0};
     const double nan_skel[] = {0, 0, 100, NAN, 0, 0};
-    const fg_thunder_block outside[] = {{FG_THUNDER_ROAR, -0.1, 0.5, 1}};
-    const fg_thunder_block beyond[] = {{FG_THUNDER_ROAR, 0.5, 1.2, 1}};
-    const fg_thunder_block reversed[] = {{FG_THUNDER_CLAP, 0.5, 0.4, 1}};
-    const fg_thunder_block overlap[] = {{FG_THUNDER_CLAP, 0.2, 0.5, 1},
+    const fg_thunder_feature outside[] = {{FG_THUNDER_ROAR, -0.1, 0.5, 1}};
+    const fg_thunder_feature beyond[] = {{FG_THUNDER_ROAR, 0.5, 1.2, 1}};
+    const fg_thunder_feature reversed[] = {{FG_THUNDER_CLAP, 0.5, 0.4, 1}};
+    const fg_thunder_feature overlap[] = {{FG_THUNDER_CLAP, 0.2, 0.5, 1},
                                         {FG_THUNDER_RUMBLE, 0.4, 0.6, 1}};
-    const fg_thunder_block clap_to_end[] = {{FG_THUNDER_CLAP, 0.8, 1.0, 1}};
-    const fg_thunder_block unknown[] = {{(fg_thunder_feature)7, 0.2, 0.3, 1}};
-    const fg_thunder_block loud[] = {{FG_THUNDER_CLAP, 0.2, 0.3, 1.5}};
-    const fg_thunder_block nan_block[] = {{FG_THUNDER_CLAP, NAN, 0.3, 1}};
+    const fg_thunder_feature clap_to_end[] = {{FG_THUNDER_CLAP, 0.8, 1.0, 1}};
+    const fg_thunder_feature unknown[] = {{(fg_thunder_kind)7, 0.2, 0.3, 1}};
+    const fg_thunder_feature loud[] = {{FG_THUNDER_CLAP, 0.2, 0.3, 1.5}};
+    const fg_thunder_feature nan_block[] = {{FG_THUNDER_CLAP, NAN, 0.3, 1}};
     struct {
         const char *what;
-        fg_lightning_params p;
+        fg_lightning_config p;
         fg_result want;
     } cases[] = {
         {"negative step", {.segment_m = -3}, FG_ERR_ARGUMENT},
@@ -272,36 +273,36 @@ static void bad_input(void **state)
         {"underground", {.skeleton_m = underground, .skeleton_points = 2}, FG_ERR_ARGUMENT},
         {"repeated point", {.skeleton_m = repeated, .skeleton_points = 3}, FG_ERR_ARGUMENT},
         {"NaN skeleton", {.skeleton_m = nan_skel, .skeleton_points = 2}, FG_ERR_NOT_FINITE},
-        {"block below 0", {.blocks = outside, .block_count = 1}, FG_ERR_ARGUMENT},
-        {"block above 1", {.blocks = beyond, .block_count = 1}, FG_ERR_ARGUMENT},
-        {"block reversed", {.blocks = reversed, .block_count = 1}, FG_ERR_ARGUMENT},
-        {"blocks overlap", {.blocks = overlap, .block_count = 2}, FG_ERR_ARGUMENT},
-        {"clap to the end", {.blocks = clap_to_end, .block_count = 1}, FG_ERR_ARGUMENT},
-        {"unknown feature", {.blocks = unknown, .block_count = 1}, FG_ERR_ARGUMENT},
-        {"amplitude 1.5", {.blocks = loud, .block_count = 1}, FG_ERR_ARGUMENT},
-        {"NaN block", {.blocks = nan_block, .block_count = 1}, FG_ERR_NOT_FINITE},
-        {"blocks NULL", {.blocks = NULL, .block_count = 1}, FG_ERR_NULL},
-        {"too many blocks", {.blocks = loud, .block_count = FG_THUNDER_MAX_BLOCKS + 1},
+        {"feature below 0", {.features = outside, .feature_count = 1}, FG_ERR_ARGUMENT},
+        {"feature above 1", {.features = beyond, .feature_count = 1}, FG_ERR_ARGUMENT},
+        {"feature reversed", {.features = reversed, .feature_count = 1}, FG_ERR_ARGUMENT},
+        {"features overlap", {.features = overlap, .feature_count = 2}, FG_ERR_ARGUMENT},
+        {"clap to the end", {.features = clap_to_end, .feature_count = 1}, FG_ERR_ARGUMENT},
+        {"unknown feature", {.features = unknown, .feature_count = 1}, FG_ERR_ARGUMENT},
+        {"amplitude 1.5", {.features = loud, .feature_count = 1}, FG_ERR_ARGUMENT},
+        {"NaN feature", {.features = nan_block, .feature_count = 1}, FG_ERR_NOT_FINITE},
+        {"features NULL", {.features = NULL, .feature_count = 1}, FG_ERR_NULL},
+        {"too many features", {.features = loud, .feature_count = FG_THUNDER_MAX_FEATURES + 1},
          FG_ERR_ARGUMENT},
     };
     fg_tree *t;
     assert_int_equal(fg_tree_create(0, &t), FG_OK);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        fg_lightning_params out;
+        fg_lightning_config out;
         memset(&out, 0x5A, sizeof out);
-        fg_lightning_params before = out;
-        if (fg_lightning_params_resolve(&cases[i].p, &out) != cases[i].want)
+        fg_lightning_config before = out;
+        if (fg_lightning_config_resolve(&cases[i].p, &out) != cases[i].want)
             fail_msg("%s: resolve", cases[i].what);
         assert_memory_equal(&out, &before, sizeof out);
-        fg_lightning_info info;
+        fg_lightning_report info;
         memset(&info, 0x5A, sizeof info);
-        fg_lightning_info info_before = info;
+        fg_lightning_report info_before = info;
         if (fg_lightning_generate(&cases[i].p, t, &info) != cases[i].want)
             fail_msg("%s: generate", cases[i].what);
         assert_int_equal(fg_tree_count(t), 0);
         assert_memory_equal(&info, &info_before, sizeof info);
     }
-    fg_lightning_params p = {.seed = 1};
+    fg_lightning_config p = {.seed = 1};
     assert_int_equal(fg_lightning_generate(&p, NULL, NULL), FG_ERR_NULL);
     assert_int_equal(fg_lightning_generate(NULL, t, NULL), FG_ERR_NULL);
     assert_int_equal(fg_tree_add(t, 1, 2, 3, -1, 0, NULL), FG_OK);
@@ -312,11 +313,11 @@ static void bad_input(void **state)
     assert_int_equal(fg_lightning_generate(&p, t, NULL), FG_ERR_CAPACITY);
     assert_int_equal(fg_tree_count(t), 0);
     /* a clap arc longer than half its circle: the listener is too close */
-    const fg_thunder_block clap[] = {{FG_THUNDER_CLAP, 0.1, 0.9, 1}};
-    fg_lightning_params near = {.skeleton_m = vertical,
+    const fg_thunder_feature clap[] = {{FG_THUNDER_CLAP, 0.1, 0.9, 1}};
+    fg_lightning_config near = {.skeleton_m = vertical,
                                 .skeleton_points = 2,
-                                .blocks = clap,
-                                .block_count = 1,
+                                .features = clap,
+                                .feature_count = 1,
                                 .listener_m = {10, 0, 4000}};
     assert_int_equal(fg_lightning_generate(&near, t, NULL), FG_ERR_ARGUMENT);
     assert_int_equal(fg_tree_count(t), 0);

@@ -12,20 +12,19 @@
 
 #include <cmocka.h>
 
-#include "abe_lowpass_internal.h"
-#include "absorb_filter_internal.h"
-#include "distance_bands_internal.h"
+#include "air/abe_lowpass_internal.h"
+#include "air/absorb_filter_internal.h"
+#include "air/distance_bands_internal.h"
 #include "engine_fixture.h"
 #include "fulgur/fulgur.h"
-#include "ground_internal.h"
-#include "refraction_internal.h"
+#include "air/refraction_internal.h"
 
 #define FS 48000.0
 #define C 343.0
 
 typedef struct render_case {
     fg_node nodes[2];
-    fg_propagation prop;
+    fg_propagation_config prop;
     fg_voice_model model;
     uint32_t channels;
     double seconds;
@@ -59,8 +58,8 @@ static float **render(const render_case *rc, size_t *frames)
     for (uint32_t ch = 0; ch < rc->channels; ch++)
         planes[ch] = calloc(*frames, sizeof **planes);
     fx_render(e, planes, rc->channels, *frames, 256);
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     assert_int_equal(st.late_events, 0);
     fg_engine_destroy(e);
     return planes;
@@ -98,31 +97,43 @@ static void shadow_zone_fades_by_the_smoothstep(void **state)
     }
 }
 
+/* The image source below z = 0 arrives later by the geometric prediction
+ * sqrt(D^2 + (hs + hl)^2) - sqrt(D^2 + (hs - hl)^2) over c, weaker by the
+ * coefficient and by eq. 3 at its longer distance. */
 static void ground_image_arrives_at_the_geometric_delay(void **state)
 {
     (void)state;
-    render_case rc;
-    /* horizontal, so both paths see it broadside */
-    lightning_segment(&rc, 0, 300, 200);
-    fx_segment(rc.nodes, (double[]){0, 300, 200}, (double[]){1, 0, 0}, 1.5);
-    rc.seconds = 1.5;
-    rc.prop.ground_reflection = 0.8;
-    size_t n;
-    float **out = render(&rc, &n);
-    size_t onsets[4];
-    size_t found = fx_onsets(out[0], n, 1e-4f, 100, onsets, 4);
-    assert_int_equal(found, 2);
-    double src[3] = {0, 300, 200}, ear[3] = {0, 0, 1.7};
-    double direct = sqrt(300.0 * 300 + 198.3 * 198.3);
-    double image = sqrt(300.0 * 300 + 201.7 * 201.7);
-    assert_true(fabs(fg_ground_extra_path_m(src, ear) - (image - direct)) < 1e-9);
-    double want = (image - direct) / C * FS;
-    assert_true(fabs((double)(onsets[1] - onsets[0]) - want) <= 1.0);
-    /* its level: the coefficient times eq. 3 at the longer distance */
-    float p_direct = fx_peak(out[0], onsets[0] + 100), p_image = fx_peak(out[0] + onsets[1], n - onsets[1]);
-    double ps_ratio = direct / image * sqrt((1 + 0.524 * log(direct / 10)) / (1 + 0.524 * log(image / 10)));
-    assert_true(fabs(p_image / p_direct - 0.8 * ps_ratio) < 0.02);
-    release(out, 1);
+    static const struct {
+        double d, hs; /* horizontal distance, source height */
+    } cases[] = {{300.0, 200.0}, {0.0, 60.0}};
+    const double hl = 1.7;
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        render_case rc;
+        /* horizontal, so both paths see it broadside */
+        lightning_segment(&rc, 0, cases[i].d, cases[i].hs);
+        fx_segment(rc.nodes, (double[]){0, cases[i].d, cases[i].hs}, (double[]){1, 0, 0}, 1.5);
+        rc.seconds = 1.5;
+        rc.prop.ground_reflection = 0.8;
+        size_t n;
+        float **out = render(&rc, &n);
+        size_t onsets[4];
+        size_t found = fx_onsets(out[0], n, 1e-4f, 100, onsets, 4);
+        assert_int_equal(found, 2);
+        double d2 = cases[i].d * cases[i].d;
+        double direct = sqrt(d2 + (cases[i].hs - hl) * (cases[i].hs - hl));
+        double image = sqrt(d2 + (cases[i].hs + hl) * (cases[i].hs + hl));
+        double want = (image - direct) / C * FS;
+        if (fabs((double)(onsets[1] - onsets[0]) - want) > 1.0)
+            fail_msg("case %zu: image %zu samples after, want %.1f", i, onsets[1] - onsets[0], want);
+        float p_direct = fx_peak(out[0], onsets[0] + 100);
+        float p_image = fx_peak(out[0] + onsets[1], n - onsets[1]);
+        double ps_ratio = direct / image *
+                          sqrt((1 + 0.524 * log(direct / 10)) / (1 + 0.524 * log(image / 10)));
+        if (fabs(p_image / p_direct - 0.8 * ps_ratio) > 0.02)
+            fail_msg("case %zu: level ratio %.4f, want %.4f", i, p_image / p_direct,
+                     0.8 * ps_ratio);
+        release(out, 1);
+    }
 }
 
 static void turbulence_offsets_are_bounded_and_seeded(void **state)
@@ -263,10 +274,31 @@ static void abe_model_falls_in_pitch(void **state)
     release(b, 1);
 }
 
+/* The defaults an effect takes once it is on, and only then. */
+static void propagation_resolves_its_defaults(void **state)
+{
+    (void)state;
+    fg_propagation_config used;
+    fg_propagation_config on = {.turbulence_s = 0.002, .absorption = FG_ABSORPTION_ABE_FIR};
+    assert_int_equal(fg_propagation_config_resolve(&on, &used), FG_OK);
+    assert_true(used.turbulence_length_m == FG_TURBULENCE_DEFAULT_LENGTH_M);
+    assert_true(used.abe_fir_distance_m == FG_ABE_FIR_DEFAULT_DISTANCE_M);
+    assert_true(used.turbulence_s == 0.002 && used.absorption == FG_ABSORPTION_ABE_FIR);
+    fg_propagation_config given = {.turbulence_s = 0.001, .turbulence_length_m = 20,
+                                   .absorption = FG_ABSORPTION_ABE_FIR, .abe_fir_distance_m = 300};
+    assert_int_equal(fg_propagation_config_resolve(&given, &used), FG_OK);
+    assert_true(used.turbulence_length_m == 20 && used.abe_fir_distance_m == 300);
+    fg_propagation_config off = {0};
+    assert_int_equal(fg_propagation_config_resolve(&off, &used), FG_OK);
+    assert_true(used.turbulence_length_m == 0 && used.abe_fir_distance_m == 0);
+    assert_int_equal(fg_propagation_config_resolve(NULL, &used), FG_ERR_NULL);
+    assert_int_equal(fg_propagation_config_resolve(&off, NULL), FG_ERR_NULL);
+}
+
 static void bad_propagation_is_refused(void **state)
 {
     (void)state;
-    static const fg_propagation bad[] = {
+    static const fg_propagation_config bad[] = {
         {.refraction_radius_m = 5000.0},
         {.refraction_radius_m = NAN},
         {.turbulence_s = -1e-3},
@@ -285,11 +317,17 @@ static void bad_propagation_is_refused(void **state)
         fg_result r = fg_engine_post(e, &d, NULL);
         assert_true(r == FG_ERR_ARGUMENT || r == FG_ERR_NOT_FINITE);
     }
+    fg_propagation_config used = {.turbulence_s = 0.5};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        fg_result r = fg_propagation_config_resolve(&bad[i], &used);
+        assert_true(r == FG_ERR_ARGUMENT || r == FG_ERR_NOT_FINITE);
+        assert_true(used.turbulence_s == 0.5); /* untouched */
+    }
     fg_discharge d = {.nodes = rc.nodes, .node_count = 2, .model = (fg_voice_model)9};
     assert_int_equal(fg_preset_sound(FG_PRESET_LIGHTNING, &d.sound), FG_OK);
     assert_int_equal(fg_engine_post(e, &d, NULL), FG_ERR_ARGUMENT);
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     assert_int_equal(st.posted, 0);
     fg_engine_destroy(e);
 }
@@ -304,6 +342,7 @@ int main(void)
         cmocka_unit_test(abe_fir_filters_only_distant_sources),
         cmocka_unit_test(head_shadow_lowers_only_the_far_ear),
         cmocka_unit_test(abe_model_falls_in_pitch),
+        cmocka_unit_test(propagation_resolves_its_defaults),
         cmocka_unit_test(bad_propagation_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

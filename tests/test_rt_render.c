@@ -30,7 +30,7 @@
 #include "fulgur/fulgur.h"
 #include "random_tree.h"
 #include "rt_guard.h"
-#include "voice_internal.h" /* FG_MAX_INSTANCES */
+#include "sound/discharge_internal.h" /* FG_MAX_INSTANCES */
 
 #define FS 48000.0
 #define BLOCK 256
@@ -135,7 +135,7 @@ static fg_result post(fg_engine *e, const scheduled *s, uint64_t key, fg_voice_i
     /* every propagation effect, on every other post; one spark in Abe's
      * model (its waves are long: one keeps the run short) */
     if (key % 2 == 0)
-        d.propagation = (fg_propagation){
+        d.propagation = (fg_propagation_config){
             .refraction_radius_m = FG_REFRACTION_STORM_M,
             .turbulence_s = 0.002,
             .absorption = key % 4 == 0 ? FG_ABSORPTION_ISO9613 : FG_ABSORPTION_ABE_FIR,
@@ -204,11 +204,11 @@ static void *mover_main(void *arg)
 /* Renders one block with the guard armed and reads the counters after it,
  * as a host's meter would; adds what the guard counted to *total. */
 static fg_result render_armed(fg_engine *e, float *const *planes, uint32_t frames,
-                              fg_engine_stats *meter, rt_guard_counts *total)
+                              fg_engine_report *meter, rt_guard_counts *total)
 {
     rt_guard_arm();
     fg_result r = fg_engine_render(e, planes, frames);
-    fg_engine_get_stats(e, meter);
+    fg_engine_get_report(e, meter);
     rt_guard_counts c = rt_guard_disarm();
     total->alloc += c.alloc;
     total->lock += c.lock;
@@ -233,7 +233,7 @@ static void test_ten_seconds_armed(void **state)
 {
     (void)state;
     fg_engine_config cfg;
-    fg_engine_config_default(&cfg);
+    assert_int_equal(fg_engine_config_resolve(NULL, &cfg), FG_OK);
     cfg.max_block_frames = BLOCK;
     shared sh = {.stop_result = FG_ERR_ARGUMENT};
     /* the guard sees the statically linked engine's calls: creating allocates */
@@ -264,7 +264,7 @@ static void test_ten_seconds_armed(void **state)
                 sched_yield();
         }
         float *planes[2] = {left + (size_t)b * BLOCK, right + (size_t)b * BLOCK};
-        fg_engine_stats meter;
+        fg_engine_report meter;
         assert_int_equal(render_armed(e, planes, BLOCK, &meter, &total), FG_OK);
         assert_int_equal(meter.blocks, (uint64_t)b + 1);
     }
@@ -274,8 +274,8 @@ static void test_ten_seconds_armed(void **state)
     /* both have ended: this thread is the sim thread now */
     sh.collected += fg_engine_collect(e);
 
-    fg_engine_stats st;
-    fg_engine_get_stats(e, &st);
+    fg_engine_report st;
+    fg_engine_get_report(e, &st);
     print_message("%llu posts, %llu adopted, %llu finished, %llu late events, %llu poses, "
                   "%llu waits for the producer\n",
                   (unsigned long long)sh.posts, (unsigned long long)st.adopted,
@@ -328,13 +328,13 @@ static void test_rare_paths_armed(void **state)
 {
     (void)state;
     fg_engine_config cfg;
-    fg_engine_config_default(&cfg);
+    assert_int_equal(fg_engine_config_resolve(NULL, &cfg), FG_OK);
     cfg.max_block_frames = BLOCK;
     fg_engine *e;
     assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
     float left[BLOCK + 1], right[BLOCK + 1], *planes[2] = {left, right};
     rt_guard_counts total = {0};
-    fg_engine_stats m;
+    fg_engine_report m;
 
     assert_int_equal(render_armed(e, planes, 0, &m, &total), FG_OK);
     assert_int_equal(render_armed(e, planes, BLOCK + 1, &m, &total), FG_ERR_BLOCK_SIZE);

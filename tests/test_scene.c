@@ -10,8 +10,8 @@
 
 #include <cmocka.h>
 
-#include "generator.h"
-#include "scene.h"
+#include "scene/generator.h"
+#include "scene/scene.h"
 
 #define SQRT_HALF 0.70710678118654752
 #define TREE "\"tree\":{\"nodes\":[[0,0,0,-1],[0,0,0.01,0]]}"
@@ -211,18 +211,19 @@ static void test_defaults(void **state)
 
     assert_int_equal(s.discharge_count, 1);
     const scene_discharge *d = &s.discharges[0];
-    fg_sound_params preset;
+    fg_sound_config preset;
     assert_int_equal(fg_preset_sound(FG_PRESET_SPARK_BALLS, &preset), FG_OK);
-    assert_memory_equal(&d->sound, &preset, sizeof preset);
+    assert_memory_equal(&d->post.sound, &preset, sizeof preset);
     assert_int_equal(d->preset, FG_PRESET_SPARK_BALLS);
-    assert_int_equal(d->strokes, 0);
-    assert_false(d->continuous);
-    assert_int_equal(d->seed, scene_discharge_seed(1, 0));
+    assert_int_equal(d->post.strokes, 0);
+    assert_false(d->post.continuous);
+    assert_int_equal(d->post.seed, scene_discharge_seed(1, 0));
     assert_null(d->generator);
-    assert_int_equal(d->node_count, 2);
-    assert_true(d->nodes[1].z == 0.01 && d->nodes[1].parent == 0 && d->nodes[1].flags == 0);
+    assert_int_equal(d->post.node_count, 2);
+    const fg_node *end = &d->post.nodes[1];
+    assert_true(end->z == 0.01 && end->parent == 0 && end->flags == 0);
     assert_int_equal(scene_build(&s, err, sizeof err), 0); /* no generator: nothing to do */
-    assert_int_equal(s.discharges[0].node_count, 2);
+    assert_int_equal(s.discharges[0].post.node_count, 2);
     scene_deinit(&s);
     assert_null(s.discharges);
 }
@@ -246,23 +247,26 @@ static void test_values(void **state)
     assert_true(s.duration_s == 2.5 && s.seed == 77 && s.gain == 0.5);
     assert_true(fabs(s.speed_of_sound_m_s - 343.5) < 1e-12);
     const scene_discharge *d = s.discharges;
-    assert_true(d[0].time_s == 0.25 && d[0].preset == FG_PRESET_LIGHTNING);
-    assert_true(d[0].sound.t0_s == 0.001 && d[0].sound.r0_m == 20 && d[0].sound.ps0_pa == 100);
-    assert_true(d[0].sound.sigma0 == 0.3 && d[0].sound.t0_jitter == 0);
-    assert_true(d[0].sound.return_stroke_speed_m_s == 2e8);
-    assert_int_equal(d[0].strokes, 4);
-    assert_int_equal(d[0].seed, 9);
-    assert_int_equal(d[0].node_count, 3);
-    assert_true(d[0].nodes[0].x == 10 && d[0].nodes[1].y == 22 && d[0].nodes[2].z == 34);
-    assert_int_equal(d[0].nodes[1].flags, FG_NODE_MAIN);
-    assert_int_equal(d[0].nodes[2].flags, 0);
+    assert_true(d[0].post.emit_time_s == 0.25 && d[0].preset == FG_PRESET_LIGHTNING);
+    const fg_sound_config *sound = &d[0].post.sound;
+    assert_true(sound->t0_s == 0.001 && sound->r0_m == 20 && sound->ps0_pa == 100);
+    assert_true(sound->sigma0 == 0.3 && sound->t0_jitter == 0);
+    assert_true(sound->return_stroke_speed_m_s == 2e8);
+    assert_int_equal(d[0].post.strokes, 4);
+    assert_int_equal(d[0].post.seed, 9);
+    assert_int_equal(d[0].post.node_count, 3);
+    const fg_node *nodes = d[0].post.nodes;
+    assert_true(nodes[0].x == 10 && nodes[1].y == 22 && nodes[2].z == 34);
+    assert_int_equal(nodes[1].flags, FG_NODE_MAIN);
+    assert_int_equal(nodes[2].flags, 0);
     /* continuous: the default interval range; no duration: until the end */
-    assert_true(d[1].continuous && d[1].repeat_min_s == 0.01 && d[1].repeat_max_s == 0.05);
-    assert_true(d[1].duration_s == 0);
-    assert_true(d[2].repeat_min_s == 0.02 && d[2].repeat_max_s == 0.03);
-    assert_true(d[2].duration_s == 1.5);
-    assert_int_equal(d[1].seed, scene_discharge_seed(77, 1));
-    assert_int_equal(d[2].seed, scene_discharge_seed(77, 2));
+    assert_true(d[1].post.continuous);
+    assert_true(d[1].post.repeat_min_s == 0.01 && d[1].post.repeat_max_s == 0.05);
+    assert_true(d[1].post.duration_s == 0);
+    assert_true(d[2].post.repeat_min_s == 0.02 && d[2].post.repeat_max_s == 0.03);
+    assert_true(d[2].post.duration_s == 1.5);
+    assert_int_equal(d[1].post.seed, scene_discharge_seed(77, 1));
+    assert_int_equal(d[2].post.seed, scene_discharge_seed(77, 2));
     scene_deinit(&s);
 }
 
@@ -282,22 +286,24 @@ static void test_propagation(void **state)
     assert_int_equal(parse(json, &s, err, sizeof err), 0);
     assert_true(s.temperature_c == 10 && s.humidity_pct == 40 && s.pressure_kpa == 95);
     assert_true(fabs(s.speed_of_sound_m_s - 337.5) < 1e-12);
-    const fg_propagation *a = &s.discharges[0].propagation, *b = &s.discharges[1].propagation;
+    const fg_propagation_config *a = &s.discharges[0].post.propagation;
+    const fg_propagation_config *b = &s.discharges[1].post.propagation;
     assert_true(a->refraction_radius_m == FG_REFRACTION_STORM_M);
     assert_true(a->turbulence_s == 0.001 && a->turbulence_length_m == FG_TURBULENCE_DEFAULT_LENGTH_M);
     assert_int_equal(a->absorption, FG_ABSORPTION_ISO9613);
     assert_true(a->ground_reflection == FG_GROUND_DEFAULT_REFLECTION);
     assert_int_equal(a->head_shadow, 1);
-    assert_int_equal(s.discharges[0].model, FG_MODEL_WM);
+    assert_int_equal(s.discharges[0].post.model, FG_MODEL_WM);
     assert_true(b->refraction_radius_m == 80000);
     assert_true(b->turbulence_s == 0.001);
     assert_int_equal(b->absorption, FG_ABSORPTION_ABE_FIR);
     assert_true(b->abe_fir_distance_m == 300);
     assert_true(b->ground_reflection == 0);
     assert_int_equal(b->head_shadow, 1);
-    assert_int_equal(s.discharges[1].model, FG_MODEL_ABE);
-    assert_int_equal(fg_propagation_check(a), FG_OK);
-    assert_int_equal(fg_propagation_check(b), FG_OK);
+    assert_int_equal(s.discharges[1].post.model, FG_MODEL_ABE);
+    fg_propagation_config used;
+    assert_int_equal(fg_propagation_config_resolve(a, &used), FG_OK);
+    assert_int_equal(fg_propagation_config_resolve(b, &used), FG_OK);
     scene_deinit(&s);
 }
 
@@ -356,8 +362,8 @@ static void test_derived_seeds(void **state)
     assert_int_equal(parse(json, &a, err, sizeof err), 0);
     assert_int_equal(parse(json, &b, err, sizeof err), 0);
     for (size_t i = 0; i < 3; i++) {
-        assert_int_equal(a.discharges[i].seed, scene_discharge_seed(5, i));
-        assert_int_equal(a.discharges[i].seed, b.discharges[i].seed);
+        assert_int_equal(a.discharges[i].post.seed, scene_discharge_seed(5, i));
+        assert_int_equal(a.discharges[i].post.seed, b.discharges[i].post.seed);
     }
     scene_deinit(&a);
     scene_deinit(&b);

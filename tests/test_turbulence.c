@@ -9,8 +9,8 @@
 
 #include <cmocka.h>
 
-#include "rng_internal.h"
-#include "turbulence_internal.h"
+#include "fg_rng.h"
+#include "air/turbulence_internal.h"
 
 #define POINTS 40000
 #define AMP 0.02

@@ -12,10 +12,11 @@
 #include <math.h>
 #include <string.h>
 
-#include "rng_internal.h"
-#include "wmwave_internal.h"
+#include "fg_math.h"
+#include "fg_rng.h"
+#include "sound/wmwave_internal.h"
+#include "wm_reference.h"
 
-#define PI 3.14159265358979323846
 #define C_M_S 343.0
 #define FS_HZ 48000.0
 
@@ -26,9 +27,9 @@
     } while (0)
 
 /* A shape with broadside peak ps: B = ps / (4 psi). */
-static wm_shape shape_of(double ps, double s, double psi)
+static fg_wm_shape shape_of(double ps, double s, double psi)
 {
-    return (wm_shape){.b = ps / (4.0 * psi), .s = s, .psi = psi};
+    return (fg_wm_shape){.b = ps / (4.0 * psi), .s = s, .psi = psi};
 }
 
 /* ---------------------------------------------------------------------------
@@ -111,7 +112,7 @@ static void test_against_point_sources(void **state)
             s = psi * (1.0 + pc->boundary_rel);
             theta = asin(s);
         } else {
-            theta = pc->theta_deg * PI / 180.0;
+            theta = pc->theta_deg * FG_PI / 180.0;
             s = fabs(sin(theta));
         }
         /* far field: r = 10^4 l makes the wavefront curvature over the
@@ -119,14 +120,14 @@ static void test_against_point_sources(void **state)
         brute_segment g = {.l = pc->l, .t_half = pc->t_half, .ps = 2.5, .r = 1e4 * pc->l,
                            .theta = theta, .m = M};
         brute_init(&g);
-        wm_shape w = shape_of(g.ps, s, psi);
+        fg_wm_shape w = shape_of(g.ps, s, psi);
 
         double span_s = 1.2 * (pc->t_half + pc->l * s / C_M_S);
         double sab = 0, saa = 0, sbb = 0, peak_a = 0, peak_b = 0;
         for (int k = 0; k < K; k++) {
             double t = span_s * (-1.0 + (2.0 * k + 1.0) / K);
             double a = brute_pressure(&g, t);
-            double b = wm_pressure(&w, C_M_S * t / pc->l);
+            double b = fg_wm_pressure(&w, C_M_S * t / pc->l);
             CHECK(isfinite(b), "%s: p not finite at t=%g", pc->name, t);
             sab += a * b;
             saa += a * a;
@@ -168,30 +169,30 @@ static void test_continuity(void **state)
     const double eps = 1e-10;
     for (size_t ci = 0; ci < N_SHAPES; ci++) {
         const shape_case *sc = &shape_cases[ci];
-        wm_shape w = shape_of(1.0, sc->s, sc->psi);
+        fg_wm_shape w = shape_of(1.0, sc->s, sc->psi);
         double bps[4] = {-(sc->psi + sc->s), -(sc->psi - sc->s), sc->psi - sc->s, sc->psi + sc->s};
         double pmax = 0, qmax = 0;
         for (int k = -1000; k <= 1000; k++) {
             double tau = (sc->psi + sc->s) * k / 1000.0;
-            pmax = fmax(pmax, fabs(wm_pressure(&w, tau)));
-            qmax = fmax(qmax, fabs(wm_integral(&w, tau)));
+            pmax = fmax(pmax, fabs(fg_wm_pressure(&w, tau)));
+            qmax = fmax(qmax, fabs(fg_wm_integral(&w, tau)));
         }
         for (int i = 0; i < 4; i++) {
             double lo = bps[i] - eps, hi = bps[i] + eps;
-            double dp = fabs(wm_pressure(&w, hi) - wm_pressure(&w, lo));
-            double dq = fabs(wm_integral(&w, hi) - wm_integral(&w, lo));
-            double at = wm_pressure(&w, bps[i]);
+            double dp = fabs(fg_wm_pressure(&w, hi) - fg_wm_pressure(&w, lo));
+            double dq = fabs(fg_wm_integral(&w, hi) - fg_wm_integral(&w, lo));
+            double at = fg_wm_pressure(&w, bps[i]);
             CHECK(dp <= 1e-7 * pmax, "%s: p jumps by %.3g (peak %.3g) at tau=%.6g", sc->name,
                   dp, pmax, bps[i]);
-            CHECK(fabs(at - wm_pressure(&w, lo)) <= 1e-7 * pmax,
+            CHECK(fabs(at - fg_wm_pressure(&w, lo)) <= 1e-7 * pmax,
                   "%s: p at breakpoint %.6g differs from the left limit", sc->name, bps[i]);
             CHECK(dq <= 1e-7 * qmax, "%s: P jumps by %.3g at tau=%.6g", sc->name, dq, bps[i]);
         }
         /* outside the support both vanish exactly */
         double out = sc->psi + sc->s;
-        CHECK(wm_pressure(&w, out * 1.0001) == 0.0 && wm_pressure(&w, -out * 1.0001) == 0.0,
+        CHECK(fg_wm_pressure(&w, out * 1.0001) == 0.0 && fg_wm_pressure(&w, -out * 1.0001) == 0.0,
               "%s: p outside the support", sc->name);
-        CHECK(wm_integral(&w, out * 1.0001) == 0.0 && wm_integral(&w, -out * 1.0001) == 0.0,
+        CHECK(fg_wm_integral(&w, out * 1.0001) == 0.0 && fg_wm_integral(&w, -out * 1.0001) == 0.0,
               "%s: P outside the support", sc->name);
     }
 }
@@ -204,15 +205,15 @@ static void test_integral_matches_quadrature(void **state)
     enum { N = 200000 }; /* even */
     for (size_t ci = 0; ci < N_SHAPES; ci++) {
         const shape_case *sc = &shape_cases[ci];
-        wm_shape w = shape_of(1.0, sc->s, sc->psi);
+        fg_wm_shape w = shape_of(1.0, sc->s, sc->psi);
         double a = -1.1 * (sc->psi + sc->s), h = -2.0 * a / N;
         double acc = 0.0, qmax = 0.0, worst = 0.0;
         for (int k = 0; k + 2 <= N; k += 2) {
             double t0 = a + k * h;
             acc += h / 3.0 *
-                   (wm_pressure(&w, t0) + 4.0 * wm_pressure(&w, t0 + h) +
-                    wm_pressure(&w, t0 + 2 * h));
-            double q = wm_integral(&w, t0 + 2 * h);
+                   (fg_wm_pressure(&w, t0) + 4.0 * fg_wm_pressure(&w, t0 + h) +
+                    fg_wm_pressure(&w, t0 + 2 * h));
+            double q = fg_wm_integral(&w, t0 + 2 * h);
             qmax = fmax(qmax, fabs(q));
             worst = fmax(worst, fabs(q - acc));
         }
@@ -236,10 +237,10 @@ static void test_zero_dc(void **state)
     const double widths[] = {1e-3, 0.05, 0.7, 3.0, 40.0, 300.0};
     for (size_t ci = 0; ci < N_SHAPES; ci++) {
         for (size_t wi = 0; wi < sizeof widths / sizeof widths[0]; wi++) {
-            wm_event e = {.shape = shape_of(1.0, shape_cases[ci].s, shape_cases[ci].psi),
+            fg_wm_event e = {.shape = shape_of(1.0, shape_cases[ci].s, shape_cases[ci].psi),
                           .center = N / 2 + 0.5 + 1e-5, .width = widths[wi]};
             memset(y, 0, sizeof y);
-            wm_add_direct(&e, y, N);
+            ref_wm_add_direct(&e, y, N);
             double sum = 0, energy = 0;
             for (int n = 0; n < N; n++) {
                 sum += y[n];
@@ -299,15 +300,15 @@ static void test_short_spark_energy(void **state)
     static double e_box[K], e_point[K];
     for (size_t ci = 0; ci < sizeof spark_cases / sizeof spark_cases[0]; ci++) {
         const spark_case *sc = &spark_cases[ci];
-        wm_shape w = shape_of(1.0, sc->s, C_M_S * sc->t_half / l);
+        fg_wm_shape w = shape_of(1.0, sc->s, C_M_S * sc->t_half / l);
         double mean_box = 0, mean_point = 0;
         for (int k = 0; k < K; k++) {
             double y[N] = {0};
-            wm_event e = {.shape = w, .center = N / 2 + (k + 0.5) / K, .width = width};
-            wm_add_direct(&e, y, N);
+            fg_wm_event e = {.shape = w, .center = N / 2 + (k + 0.5) / K, .width = width};
+            ref_wm_add_direct(&e, y, N);
             double eb = 0, ep = 0;
             for (int n = 0; n < N; n++) {
-                double p = wm_pressure(&w, (n - e.center) / width);
+                double p = fg_wm_pressure(&w, (n - e.center) / width);
                 eb += y[n] * y[n] / FS_HZ;
                 ep += p * p / FS_HZ;
             }
@@ -325,7 +326,7 @@ static void test_short_spark_energy(void **state)
         assert_non_null(pf);
         double x0 = -half - 1.0, h = 1.0 / SUB;
         for (int i = 0; i < len; i++)
-            pf[i] = wm_pressure(&w, (x0 + (i + 0.5) * h) / width);
+            pf[i] = fg_wm_pressure(&w, (x0 + (i + 0.5) * h) / width);
         double run = 0, q2 = 0, p2 = 0;
         for (int i = 0; i < len; i++) {
             run += pf[i] * h;
@@ -401,15 +402,15 @@ static void test_chain_is_one_segment(void **state)
         memset(longseg, 0, sizeof longseg);
         for (int j = 0; j < cc->n; j++) {
             double x = (2 * j - (cc->n - 1)) * cc->l; /* centre along the chain */
-            wm_event e = {.shape = shape_of(ps, cc->s, C_M_S * cc->t_half / cc->l),
+            fg_wm_event e = {.shape = shape_of(ps, cc->s, C_M_S * cc->t_half / cc->l),
                           .center = center + FS_HZ * x * cc->s / C_M_S,
                           .width = FS_HZ * cc->l / C_M_S};
-            wm_add_direct(&e, chain, N);
+            ref_wm_add_direct(&e, chain, N);
         }
         double big_l = cc->n * cc->l;
-        wm_event one = {.shape = shape_of(ps, cc->s, C_M_S * cc->t_half / big_l),
+        fg_wm_event one = {.shape = shape_of(ps, cc->s, C_M_S * cc->t_half / big_l),
                         .center = center, .width = FS_HZ * big_l / C_M_S};
-        wm_add_direct(&one, longseg, N);
+        ref_wm_add_direct(&one, longseg, N);
         double peak = 0, worst = 0;
         for (int k = 0; k < N; k++) {
             peak = fmax(peak, fabs(chain[k]));
@@ -425,9 +426,9 @@ static void test_chain_is_one_segment(void **state)
  * 5. The block accumulator equals the direct per-sample sum. The test
  * rebuilds each block in double from the state and third differences as the
  * header defines them, so the comparison is not limited by float output;
- * wm_block_end is then checked against the same values to float rounding. */
+ * fg_accum_end is then checked against the same values to float rounding. */
 
-static wm_event random_event(fg_rng *rng, double lo, double hi)
+static fg_wm_event random_event(fg_rng *rng, double lo, double hi)
 {
     double u = fg_rng_uniform(rng);
     double psi = exp(fg_rng_range(rng, log(0.01), log(20.0)));
@@ -447,11 +448,11 @@ static wm_event random_event(fg_rng *rng, double lo, double hi)
     else
         width = exp(fg_rng_range(rng, log(1e-3), log(300.0)));
     double ps = fg_rng_range(rng, -1.0, 1.0);
-    return (wm_event){.shape = shape_of(ps, s, psi), .center = fg_rng_range(rng, lo, hi),
+    return (fg_wm_event){.shape = shape_of(ps, s, psi), .center = fg_rng_range(rng, lo, hi),
                       .width = width};
 }
 
-static void rebuild(const wm_block *b, double *y)
+static void rebuild(const fg_accum *b, double *y)
 {
     double y1 = b->state[0], y2 = b->state[1], y3 = b->state[2];
     for (size_t k = 0; k < b->n; k++) {
@@ -490,7 +491,7 @@ static double run_blocks(const block_case *bc, uint64_t seed)
     fg_rng rng;
     fg_rng_seed(&rng, seed);
     size_t total = bc->total;
-    wm_event *ev = malloc((size_t)bc->events * sizeof *ev);
+    fg_wm_event *ev = malloc((size_t)bc->events * sizeof *ev);
     double *ref = calloc(total, sizeof *ref);
     double *d3 = malloc(4096 * sizeof *d3);
     double *y = malloc(4096 * sizeof *y);
@@ -499,7 +500,7 @@ static double run_blocks(const block_case *bc, uint64_t seed)
     /* centres from before the first block to after the last */
     for (int i = 0; i < bc->events; i++) {
         ev[i] = random_event(&rng, -300.0, (double)total + 300.0);
-        wm_add_direct(&ev[i], ref, total);
+        ref_wm_add_direct(&ev[i], ref, total);
     }
     double peak = 0;
     for (size_t k = 0; k < total; k++)
@@ -512,27 +513,27 @@ static double run_blocks(const block_case *bc, uint64_t seed)
         size_t n = bc->block ? bc->block : 1 + (size_t)(fg_rng_next(&rng) % 4096);
         if (n > total - start)
             n = total - start;
-        wm_block blk;
-        wm_block_begin(&blk, d3, n);
+        fg_accum blk;
+        fg_accum_begin(&blk, d3, n);
         for (int i = 0; i < bc->events; i++) {
-            wm_event rel = ev[i];
+            fg_wm_event rel = ev[i];
             rel.center -= (double)start;
             long first, last;
-            wm_event_span(&rel, &first, &last);
-            wm_status st = wm_block_add(&blk, &rel);
-            if (st == WM_DONE)
+            fg_wm_event_span(&rel, &first, &last);
+            fg_wave_status st = fg_wm_accum_add(&blk, &rel);
+            if (st == FG_WAVE_DONE)
                 CHECK(last < 0, "%s: event %d DONE but reaches sample %ld", bc->name, i, last);
-            if (st == WM_PENDING)
+            if (st == FG_WAVE_PENDING)
                 CHECK(first >= (long)n, "%s: event %d PENDING but starts at %ld", bc->name, i,
                       first);
         }
         rebuild(&blk, y);
         memset(out, 0, n * sizeof *out);
-        wm_block_end(&blk, out, 0.5f);
+        fg_accum_end(&blk, out, 0.5f);
         for (size_t k = 0; k < n; k++) {
             worst = fmax(worst, fabs(y[k] - ref[start + k]));
             CHECK(fabs(out[k] - 0.5 * y[k]) <= 1e-7 * peak,
-                  "%s: wm_block_end wrote %.9g for %.9g", bc->name, out[k], 0.5 * y[k]);
+                  "%s: fg_accum_end wrote %.9g for %.9g", bc->name, out[k], 0.5 * y[k]);
         }
         start += n;
     }
@@ -564,13 +565,13 @@ static void test_block_no_drift(void **state)
     const size_t total = (size_t)BLOCK * BLOCKS;
     fg_rng rng;
     fg_rng_seed(&rng, 77);
-    wm_event *ev = malloc(EVENTS * sizeof *ev);
+    fg_wm_event *ev = malloc(EVENTS * sizeof *ev);
     double *ref = calloc(total, sizeof *ref);
     assert_true(ev && ref);
     for (int i = 0; i < EVENTS; i++) {
         ev[i] = random_event(&rng, 0.0, (double)total);
         ev[i].width = fmin(ev[i].width, 50.0);
-        wm_add_direct(&ev[i], ref, total);
+        ref_wm_add_direct(&ev[i], ref, total);
     }
     double peak = 0;
     for (size_t k = 0; k < total; k++)
@@ -578,12 +579,12 @@ static void test_block_no_drift(void **state)
     double d3[BLOCK], y[BLOCK];
     double first_err = 0, last_err = 0;
     for (size_t b = 0; b < BLOCKS; b++) {
-        wm_block blk;
-        wm_block_begin(&blk, d3, BLOCK);
+        fg_accum blk;
+        fg_accum_begin(&blk, d3, BLOCK);
         for (int i = 0; i < EVENTS; i++) {
-            wm_event rel = ev[i];
+            fg_wm_event rel = ev[i];
             rel.center -= (double)(b * BLOCK);
-            (void)wm_block_add(&blk, &rel);
+            (void)fg_wm_accum_add(&blk, &rel);
         }
         rebuild(&blk, y);
         double err = 0;
@@ -611,12 +612,12 @@ static void test_tiny_s(void **state)
     const double psis[] = {0.05, 1.0, 10.0};
     for (size_t pi = 0; pi < 3; pi++) {
         double psi = psis[pi];
-        wm_shape n_wave = shape_of(1.0, 0.0, psi);
+        fg_wm_shape n_wave = shape_of(1.0, 0.0, psi);
         for (size_t si = 0; si < 3; si++) {
-            wm_shape w = shape_of(1.0, tiny[si], psi);
+            fg_wm_shape w = shape_of(1.0, tiny[si], psi);
             for (int k = -2000; k <= 2000; k++) {
                 double tau = 1.2 * psi * k / 2000.0 + 1e-7 * psi;
-                double p = wm_pressure(&w, tau), q = wm_integral(&w, tau);
+                double p = fg_wm_pressure(&w, tau), q = fg_wm_integral(&w, tau);
                 CHECK(isfinite(p) && isfinite(q), "s=%g psi=%g: p=%g P=%g at %g", tiny[si], psi,
                       p, q, tau);
                 /* away from the jumps at +-psi, exactly the N-wave -ps tau/psi */
@@ -625,15 +626,15 @@ static void test_tiny_s(void **state)
                     CHECK(fabs(p - want) <= 1e-9, "s=%g psi=%g: p(%g)=%.12g, N-wave %.12g",
                           tiny[si], psi, tau, p, want);
                 }
-                CHECK(fabs(q - wm_integral(&n_wave, tau)) <= 1e-9 * psi,
+                CHECK(fabs(q - fg_wm_integral(&n_wave, tau)) <= 1e-9 * psi,
                       "s=%g psi=%g: P(%g) differs from the N-wave's", tiny[si], psi, tau);
             }
             /* sample averages as well */
             double y[64] = {0}, y0[64] = {0};
-            wm_event e = {.shape = w, .center = 31.7, .width = 7.0 / psi};
-            wm_event e0 = {.shape = n_wave, .center = 31.7, .width = 7.0 / psi};
-            wm_add_direct(&e, y, 64);
-            wm_add_direct(&e0, y0, 64);
+            fg_wm_event e = {.shape = w, .center = 31.7, .width = 7.0 / psi};
+            fg_wm_event e0 = {.shape = n_wave, .center = 31.7, .width = 7.0 / psi};
+            ref_wm_add_direct(&e, y, 64);
+            ref_wm_add_direct(&e0, y0, 64);
             for (int n = 0; n < 64; n++)
                 CHECK(isfinite(y[n]) && fabs(y[n] - y0[n]) <= 1e-9,
                       "s=%g psi=%g: sample %d = %.12g vs %.12g", tiny[si], psi, n, y[n], y0[n]);

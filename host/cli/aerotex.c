@@ -8,10 +8,10 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "aero_texture_file.h"
-#include "commands.h"
+#include "common/aero_texture_file.h"
+#include "common/commands.h"
+#include "fg_math.h"
 
-#define PI 3.14159265358979323846
 #define MAX_LIST 4096
 
 static const char usage[] =
@@ -209,12 +209,12 @@ static int parse(int argc, char **argv, options *o)
             if (n < 0)
                 return CLI_USAGE;
             for (int k = 0; k < n; k++)
-                o->directions[k] *= PI / 180.0;
+                o->directions[k] *= FG_PI / 180.0;
             c->directions_rad = o->directions;
             c->direction_count = (uint32_t)n;
         } else if (strcmp(a, "--step") == 0) {
             rc = number(a, v, 0.1, 180, 0, &o->step_deg);
-            c->direction_step_rad = o->step_deg * PI / 180.0;
+            c->direction_step_rad = o->step_deg * FG_PI / 180.0;
         } else if (strcmp(a, "--sources") == 0) {
             rc = whole(a, v, 1, FG_AERO_MAX_SOURCES, &c->sources);
         } else if (strcmp(a, "--domain") == 0) {
@@ -401,7 +401,7 @@ static void print_texture(FILE *to, const fg_aero_texture *t)
     for (uint32_t i = 0; i < d->directions; i++) {
         const fg_aero_direction *r = &d->direction[i];
         fprintf(to, "  %9.3f  %12.4f  %8.4f  %14.4f  %9.4f  %7u  %6u  %11.4g\n",
-                r->angle_rad * 180.0 / PI, r->frequency_hz, r->strouhal, r->lift_amplitude,
+                r->angle_rad * 180.0 / FG_PI, r->frequency_hz, r->strouhal, r->lift_amplitude,
                 r->drag_mean, r->periods, r->frames, r->transient_s);
     }
 }

@@ -8,6 +8,7 @@
 #include <zlib.h>
 
 #include "aero_texture_file.h"
+#include "fg_array.h"
 #include "temp_file.h"
 
 #define HEADER_BYTES 160u
@@ -358,8 +359,8 @@ int aero_texture_load(const char *path, fg_aero_texture **out, char *err, size_t
     size_t size = 0, cap = 0;
     for (;;) {
         if (size == cap) {
-            cap = cap ? 2 * cap : 1 << 16;
-            uint8_t *grown = cap <= MAX_FILE_BYTES ? realloc(bytes, cap) : NULL;
+            uint8_t *grown =
+                size < MAX_FILE_BYTES ? fg_array_grow(bytes, &cap, size + 1, 1, 1 << 16) : NULL;
             if (!grown) {
                 free(bytes);
                 fclose(f);

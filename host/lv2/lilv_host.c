@@ -74,29 +74,30 @@ static const char *unmap_uri(LV2_URID_Unmap_Handle handle, LV2_URID urid)
     return urid >= 1 && urid <= uri_count ? uris[urid - 1] : NULL;
 }
 
-/* [audio-thread] copies the request into the queue: no allocation */
+/* Copies a job into queue (*count held): no allocation. */
+static LV2_Worker_Status queue_job(job *queue, unsigned *count, uint32_t size, const void *data)
+{
+    if (size > JOB_BYTES || *count == MAX_JOBS)
+        return LV2_WORKER_ERR_NO_SPACE;
+    job *j = &queue[(*count)++];
+    j->size = size;
+    memcpy(j->data, data, size);
+    return LV2_WORKER_SUCCESS;
+}
+
+/* [audio-thread] */
 static LV2_Worker_Status schedule_work(LV2_Worker_Schedule_Handle handle, uint32_t size,
                                        const void *data)
 {
     lv2_host *h = handle;
-    if (size > JOB_BYTES || h->request_count == MAX_JOBS)
-        return LV2_WORKER_ERR_NO_SPACE;
-    job *j = &h->requests[h->request_count++];
-    j->size = size;
-    memcpy(j->data, data, size);
-    return LV2_WORKER_SUCCESS;
+    return queue_job(h->requests, &h->request_count, size, data);
 }
 
 static LV2_Worker_Status respond(LV2_Worker_Respond_Handle handle, uint32_t size,
                                  const void *data)
 {
     lv2_host *h = handle;
-    if (size > JOB_BYTES || h->response_count == MAX_JOBS)
-        return LV2_WORKER_ERR_NO_SPACE;
-    job *j = &h->responses[h->response_count++];
-    j->size = size;
-    memcpy(j->data, data, size);
-    return LV2_WORKER_SUCCESS;
+    return queue_job(h->responses, &h->response_count, size, data);
 }
 
 /* The index of the control port named symbol, or NO_PORT. */

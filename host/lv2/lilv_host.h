@@ -8,8 +8,8 @@
  * (never while lv2_host_run runs): a test calls it from a worker thread,
  * an offline renderer between blocks. The responses are delivered at the
  * start of the next lv2_host_run, before run(), on its thread. */
-#ifndef FULGUR_HOST_LV2_LILV_HOST_H
-#define FULGUR_HOST_LV2_LILV_HOST_H
+#ifndef HOST_LV2_LILV_HOST_H
+#define HOST_LV2_LILV_HOST_H
 
 #include <stdint.h>
 

@@ -2,12 +2,14 @@
  * preset's tree, where it is heard and how loud. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "plugin.h"
+#include "fg_math.h"
+#include "fg_array.h"
 
 #define NEAREST_M 0.05
 #define FARTHEST_M 20000.0
-#define PI 3.14159265358979323846
 
 double note_distance_m(double distance_m, uint8_t note)
 {
@@ -21,7 +23,7 @@ static fg_result field_ready(preset_field *pf, fg_preset preset, fg_field **out)
 {
     if (!pf->field) {
         fg_field *field;
-        fg_result r = fg_discharge_preset(preset, 0, &pf->setup);
+        fg_result r = fg_field_scene_preset(preset, 0, &pf->setup);
         if (r == FG_OK)
             r = fg_field_create(&pf->setup.grid, &field);
         if (r != FG_OK)
@@ -43,20 +45,12 @@ static fg_result field_ready(preset_field *pf, fg_preset preset, fg_field **out)
 static fg_result place(plugin *p, const double offset_m[3])
 {
     size_t n = fg_tree_count(p->tree);
-    if (n > p->placed_capacity) {
-        fg_node *grown = realloc(p->placed, n * sizeof *grown);
-        if (!grown)
-            return FG_ERR_NO_MEMORY;
-        p->placed = grown;
-        p->placed_capacity = n;
-    }
-    const fg_node *src = fg_tree_nodes(p->tree);
-    for (size_t i = 0; i < n; i++) {
-        p->placed[i] = src[i];
-        p->placed[i].x += offset_m[0];
-        p->placed[i].y += offset_m[1];
-        p->placed[i].z += offset_m[2];
-    }
+    fg_node *grown = fg_array_grow(p->placed, &p->placed_capacity, n, sizeof *grown, n);
+    if (!grown)
+        return FG_ERR_NO_MEMORY;
+    p->placed = grown;
+    memcpy(p->placed, fg_tree_nodes(p->tree), n * sizeof *p->placed);
+    fg_tree_translate(p->placed, n, offset_m);
     return FG_OK;
 }
 
@@ -69,14 +63,14 @@ static fg_result grow(plugin *p, const work_request *rq, const fg_node **nodes)
     fg_listener head;
     fg_engine_get_listener(p->engine, &head);
     double d = note_distance_m(c->distance_m, rq->note);
-    double az = c->azimuth_deg * PI / 180, el = c->elevation_deg * PI / 180;
+    double az = c->azimuth_deg * FG_PI / 180, el = c->elevation_deg * FG_PI / 180;
     /* the listener faces +y with +x on the right and +z up (instantiate) */
     double at[3] = {head.position[0] + d * sin(az) * cos(el),
                     head.position[1] + d * cos(az) * cos(el), head.position[2] + d * sin(el)};
     fg_tree_clear(p->tree);
     if (c->preset == FG_PRESET_LIGHTNING) {
         /* a cloud-to-ground bolt strikes the ground: elevation does not apply */
-        fg_lightning_params lp = {.strike_m = {head.position[0] + d * sin(az),
+        fg_lightning_config lp = {.strike_m = {head.position[0] + d * sin(az),
                                                head.position[1] + d * cos(az)},
                                   .seed = rq->seed};
         fg_result r = fg_lightning_generate(&lp, p->tree, NULL);

@@ -55,7 +55,10 @@ static LV2_Handle instantiate(const LV2_Descriptor *descriptor, double rate_hz,
         return NULL;
     }
     fg_engine_config config;
-    fg_engine_config_default(&config);
+    if (fg_engine_config_resolve(NULL, &config) != FG_OK) {
+        free(p);
+        return NULL;
+    }
     config.sample_rate_hz = rate_hz;
     p->max_block_frames = config.max_block_frames;
     p->schedule = schedule;

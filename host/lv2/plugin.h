@@ -12,8 +12,8 @@
  *   state save/restore    [main-thread]   never concurrent with run()
  * Everything run() reads that the worker writes comes back through
  * work_response; the engine's own rings carry the voices. */
-#ifndef FULGUR_HOST_LV2_PLUGIN_H
-#define FULGUR_HOST_LV2_PLUGIN_H
+#ifndef HOST_LV2_PLUGIN_H
+#define HOST_LV2_PLUGIN_H
 
 #include <stdint.h>
 
@@ -78,7 +78,7 @@ typedef struct work_reply {
 
 /* Fields of Matsuyama's presets, grown in on the worker. */
 typedef struct preset_field {
-    fg_discharge_setup setup;
+    fg_field_scene setup;
     fg_field *field;     /* NULL until the first note of the preset (solved then) */
 } preset_field;
 

@@ -2,70 +2,67 @@
  * The plugin is loaded by liblilv as any host loads it (LV2_PATH, else
  * ~/.lv2 and the system's lib/lv2) and driven block by block; its worker
  * runs between blocks, as LV2 allows an offline host to. */
-#include <errno.h>
 #include <math.h>
 #include <sndfile.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/audio_file.h"
+#include "common/options.h"
+#include "common/temp_file.h"
 #include "lilv_host.h"
 #include "smf.h"
-#include "temp_file.h"
 
 #define BLOCK 256
 
-static const char usage[] =
-    "usage: fulgur-lv2-render IN.mid -o OUT.wav [-r RATE_HZ] [-t TAIL_S] [SYMBOL=VALUE]...\n"
-    "Plays IN.mid through fulgur.lv2 and writes a stereo 32-bit float WAV, until TAIL_S\n"
-    "(default 5) after the last MIDI event. SYMBOL=VALUE sets a control port, e.g.\n"
-    "preset=2 distance=3000 gain=-50 (see fulgur.ttl). RATE_HZ defaults to 48000.\n"
-    "Exit: 0 done, 1 runtime error, 2 bad arguments or MIDI file.\n";
+static const char about[] =
+    "Plays IN.mid through fulgur.lv2 and writes a stereo 32-bit float WAV. SYMBOL=VALUE\n"
+    "sets a control port, e.g. preset=2 distance=3000 gain=-50 (see fulgur.ttl).\n";
+
+static const char notes[] = "Exit: 0 done, 1 runtime error, 2 bad arguments or MIDI file.\n";
+
+#define MAX_CONTROLS 64
 
 typedef struct options {
     const char *in, *out;
     double rate_hz, tail_s;
-    const char *controls[64];
+    const char *controls[MAX_CONTROLS];
     size_t control_count;
 } options;
 
-static int parse_number(const char *s, double lo, double hi, double *out)
-{
-    char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (errno || end == s || *end || !(v >= lo && v <= hi))
-        return -1;
-    *out = v;
-    return 0;
-}
-
+/* The operands: IN.mid, and the SYMBOL=VALUE controls in any place. */
 static int parse_args(int argc, char **argv, options *o)
 {
     *o = (options){.rate_hz = 48000, .tail_s = 5};
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int has_value = i + 1 < argc;
-        if (!strcmp(a, "-o") && has_value) {
-            o->out = argv[++i];
-        } else if (!strcmp(a, "-r") && has_value) {
-            if (parse_number(argv[++i], 8000, 384000, &o->rate_hz))
-                return fprintf(stderr, "fulgur-lv2-render: -r: a rate in 8000..384000 Hz\n"), -1;
-        } else if (!strcmp(a, "-t") && has_value) {
-            if (parse_number(argv[++i], 0, 3600, &o->tail_s))
-                return fprintf(stderr, "fulgur-lv2-render: -t: seconds in 0..3600\n"), -1;
-        } else if (strchr(a, '=') && a[0] != '-') {
-            if (o->control_count == sizeof o->controls / sizeof o->controls[0])
-                return fprintf(stderr, "fulgur-lv2-render: too many controls\n"), -1;
-            o->controls[o->control_count++] = a;
-        } else if (!o->in && a[0] != '-') {
-            o->in = a;
-        } else {
-            return fprintf(stderr, "fulgur-lv2-render: unexpected argument '%s'\n%s", a, usage), -1;
-        }
+    const option table[] = {
+        {"-o", OPTION_TEXT, &o->out, "OUT.wav", .help = "the WAV to write", .required = true},
+        {"-r", OPTION_NUMBER, &o->rate_hz, "RATE_HZ", .help = "the sample rate (default 48000)",
+         .range = {.lo = 8000, .hi = 384000}},
+        {"-t", OPTION_NUMBER, &o->tail_s, "TAIL_S",
+         .help = "seconds rendered after the last MIDI event (default 5)",
+         .range = {.lo = 0, .hi = 3600}},
+        {0},
+    };
+    const command_line cl = {"fulgur-lv2-render", "IN.mid [SYMBOL=VALUE]...", 1,
+                             MAX_CONTROLS + 1, about, notes, table};
+    const char *operands[MAX_CONTROLS + 1];
+    size_t count;
+    options_result r = options_parse(&cl, argc, argv, operands, &count);
+    if (r != OPTIONS_OK)
+        return r == OPTIONS_HELP ? 1 : -1;
+    for (size_t i = 0; i < count; i++) {
+        if (strchr(operands[i], '=') && o->control_count == MAX_CONTROLS)
+            return options_fail(&cl, "more than %d controls", MAX_CONTROLS), -1;
+        if (strchr(operands[i], '='))
+            o->controls[o->control_count++] = operands[i];
+        else if (!o->in)
+            o->in = operands[i];
+        else
+            return options_fail(&cl, "unexpected argument \"%s\"", operands[i]), -1;
     }
-    if (!o->in || !o->out)
-        return fprintf(stderr, "%s", usage), -1;
+    if (!o->in)
+        return options_fail(&cl, "give IN.mid"), -1;
     return 0;
 }
 
@@ -76,7 +73,7 @@ static int set_controls(lv2_host *h, const options *o)
         const char *eq = strchr(o->controls[i], '=');
         size_t len = (size_t)(eq - o->controls[i]);
         double v;
-        if (len >= sizeof name || parse_number(eq + 1, -1e9, 1e9, &v)) {
+        if (len >= sizeof name || option_number(eq + 1, (number_range){.lo = -1e9, .hi = 1e9}, &v) != 0) {
             fprintf(stderr, "fulgur-lv2-render: '%s': expected SYMBOL=NUMBER\n", o->controls[i]);
             return -1;
         }
@@ -97,6 +94,7 @@ static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz
     double end_s = (count ? ev[count - 1].time_s : 0) + tail_s;
     uint64_t frames = (uint64_t)ceil(end_s * rate_hz), next = 0;
     float left[BLOCK], right[BLOCK], frame[2 * BLOCK];
+    float *const planes[2] = {left, right};
     for (uint64_t start = 0; start < frames; start += BLOCK) {
         uint32_t n = frames - start < BLOCK ? (uint32_t)(frames - start) : BLOCK;
         for (; next < count && (uint64_t)(ev[next].time_s * rate_hz) < start + n; next++) {
@@ -110,10 +108,7 @@ static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz
         }
         lv2_host_run(h, n, left, right);
         lv2_host_work(h);
-        for (uint32_t i = 0; i < n; i++) {
-            frame[2 * i] = left[i];
-            frame[2 * i + 1] = right[i];
-        }
+        audio_interleave(planes, 2, n, 1, frame);
         if (sf_writef_float(wav, frame, n) != n) {
             fprintf(stderr, "fulgur-lv2-render: writing: %s\n", sf_strerror(wav));
             return -1;
@@ -130,8 +125,9 @@ static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz
 int main(int argc, char **argv)
 {
     options o;
-    if (parse_args(argc, argv, &o))
-        return 2;
+    int parsed = parse_args(argc, argv, &o);
+    if (parsed != 0)
+        return parsed > 0 ? 0 : 2;
     char err[512];
     smf_event *events;
     size_t count;
@@ -152,12 +148,10 @@ int main(int argc, char **argv)
         free(events);
         return 1;
     }
-    SF_INFO info = {.samplerate = (int)o.rate_hz, .channels = 2,
-                    .format = SF_FORMAT_WAV | SF_FORMAT_FLOAT};
-    SNDFILE *wav = sf_open_fd(out.fd, SFM_WRITE, &info, SF_FALSE);
+    SNDFILE *wav = audio_wav_open(out.fd, o.out, o.rate_hz, 2, err, sizeof err);
     int ok = wav && render(h, events, count, o.rate_hz, o.tail_s, wav) == 0;
     if (!wav)
-        fprintf(stderr, "fulgur-lv2-render: %s: %s\n", o.out, sf_strerror(NULL));
+        fprintf(stderr, "fulgur-lv2-render: %s\n", err);
     if (wav && sf_close(wav) != 0 && ok) {
         fprintf(stderr, "fulgur-lv2-render: %s: closing the WAV failed\n", o.out);
         ok = 0;

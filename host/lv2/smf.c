@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "smf.h"
+#include "fg_array.h"
 
 #define MAX_FILE_BYTES (64u << 20)
 #define DEFAULT_TEMPO_US 500000.0   /* 120 bpm until a tempo event */
@@ -50,14 +51,10 @@ static int varlen(const uint8_t **p, const uint8_t *end, uint32_t *out)
 
 static int push(reader *r, raw_event e)
 {
-    if (r->count == r->capacity) {
-        size_t cap = r->capacity ? 2 * r->capacity : 256;
-        raw_event *grown = realloc(r->events, cap * sizeof *grown);
-        if (!grown)
-            return -1;
-        r->events = grown;
-        r->capacity = cap;
-    }
+    raw_event *grown = fg_array_grow(r->events, &r->capacity, r->count + 1, sizeof *grown, 256);
+    if (!grown)
+        return -1;
+    r->events = grown;
     e.order = r->count;
     r->events[r->count++] = e;
     return 0;

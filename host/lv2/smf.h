@@ -1,7 +1,7 @@
 /* A Standard MIDI File (format 0 or 1) read into timed channel messages,
  * for rendering a MIDI file through fulgur.lv2 offline. */
-#ifndef FULGUR_HOST_LV2_SMF_H
-#define FULGUR_HOST_LV2_SMF_H
+#ifndef HOST_LV2_SMF_H
+#define HOST_LV2_SMF_H
 
 #include <stddef.h>
 #include <stdint.h>

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <zlib.h>
 
-#include "aero_texture_file.h"
+#include "common/aero_texture_file.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

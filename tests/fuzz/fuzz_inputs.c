@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -25,9 +25,9 @@ static void fuzz_scene(const char *text, size_t size)
     }
     for (size_t i = 0; i < s.discharge_count; i++) {
         const scene_discharge *d = &s.discharges[i];
-        if (!d->generator && fg_tree_check(d->nodes, d->node_count, NULL) != FG_OK)
+        if (!d->generator && fg_tree_check(d->post.nodes, d->post.node_count, NULL) != FG_OK)
             abort();
-        if (fg_sound_params_check(&d->sound) != FG_OK)
+        if (fg_sound_config_check(&d->post.sound) != FG_OK)
             abort();
     }
     fg_listener pose;

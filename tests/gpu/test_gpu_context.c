@@ -17,7 +17,7 @@
 
 #include <cmocka.h>
 
-#include "gpu_internal.h"
+#include "context/gpu_internal.h"
 
 #define SQUARES 1000 /* not a multiple of the work group size */
 

@@ -13,7 +13,7 @@
 
 #include <cmocka.h>
 
-#include "fulgur/discharge.h"
+#include "fulgur/field_scene.h"
 #include "fulgur/growth.h"
 #include "fulgur/gpu.h"
 #include "fulgur/tree.h"
@@ -86,9 +86,9 @@ static void make_scene(scene_kind kind, int size, scene *out)
         out->growth = (fg_growth_config){.step_m = 2.0 / (size - 1)};
         return;
     }
-    fg_discharge_setup s;
+    fg_field_scene s;
     fg_preset p = kind == SCENE_SPARK ? FG_PRESET_SPARK_BALLS : FG_PRESET_PLASMA_BALL;
-    assert_int_equal(fg_discharge_preset(p, size, &s), FG_OK);
+    assert_int_equal(fg_field_scene_preset(p, size, &s), FG_OK);
     out->grid = s.grid;
     out->count = s.shape_count;
     memcpy(out->shapes, s.shapes, s.shape_count * sizeof s.shapes[0]);

@@ -23,6 +23,7 @@
 #include <cmocka.h>
 
 #include "fulgur/gpu.h"
+#include "fg_math.h"
 
 #define W 256
 #define H 160
@@ -161,7 +162,7 @@ static void project(const fgg_camera *c, const double p[3], double *px, double *
     double x = s[0] * d[0] + s[1] * d[1] + s[2] * d[2];
     double y = u[0] * d[0] + u[1] * d[1] + u[2] * d[2];
     double z = f[0] * d[0] + f[1] * d[1] + f[2] * d[2];
-    double focal = 1 / tan(c->fov_y_deg * 3.14159265358979323846 / 360);
+    double focal = 1 / tan(c->fov_y_deg * FG_PI / 360);
     double ndc_x = focal * (double)H / W * x / z, ndc_y = focal * y / z;
     *px = (ndc_x + 1) * 0.5 * W; /* pixel edges: the centre of pixel i is i + 0.5 */
     *py = (1 - ndc_y) * 0.5 * H;

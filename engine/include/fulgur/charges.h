@@ -50,7 +50,7 @@ typedef struct fg_point_charge {
 } fg_point_charge;
 
 /* Zero in any field means the default given in its comment. */
-typedef struct fg_charges_params {
+typedef struct fg_charges_config {
     const fg_point_charge *charges; /* borrowed for the call; at least one */
     size_t charge_count;
     double start_m[3];       /* the leader's origin (root); z > 0 for a ground target */
@@ -63,7 +63,7 @@ typedef struct fg_charges_params {
     double target_radius_m;  /* 0: the target is the ground z <= 0 */
     uint32_t max_nodes;      /* give up after this many nodes: 200000 */
     uint64_t seed;           /* same seed, same tree */
-} fg_charges_params;
+} fg_charges_config;
 
 /* The potential of the charges at p, volts. Reads only. [any-thread]
  * A point on a charge is taken 1 nm from it (finite, very large). */
@@ -78,16 +78,16 @@ FG_API double fg_charges_potential(const fg_point_charge *charges, size_t count,
  * max_tips > 4096, chosen > candidates, exclusion >= 2 step, a start on or
  * below the ground (z <= 0) with a ground target, or a start already inside
  * the target sphere. *out is written only on success. */
-FG_API FG_NODISCARD fg_result fg_charges_params_resolve(const fg_charges_params *in,
-                                                        fg_charges_params *out);
+FG_API FG_NODISCARD fg_result fg_charges_config_resolve(const fg_charges_config *in,
+                                                        fg_charges_config *out);
 
 /* Grows a leader from start_m until it reaches the target and appends it to
  * out, which must be empty; the root is node 0. out stays owned by the
  * caller. Deterministic for a given seed. [sim-thread]
- * Errors: those of fg_charges_params_resolve; FG_ERR_NULL out;
+ * Errors: those of fg_charges_config_resolve; FG_ERR_NULL out;
  * FG_ERR_ARGUMENT out is not empty; FG_ERR_UNREACHABLE no tip can go
  * forward, or max_nodes were used without reaching the target;
  * FG_ERR_NO_MEMORY. On any error out is left empty. */
-FG_API FG_NODISCARD fg_result fg_charges_grow(const fg_charges_params *params, fg_tree *out);
+FG_API FG_NODISCARD fg_result fg_charges_grow(const fg_charges_config *config, fg_tree *out);
 
 #endif

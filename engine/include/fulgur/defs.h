@@ -1,4 +1,5 @@
-/* fulgur — common definitions: export macro, result attribute, thread tags.
+/* fulgur — common definitions: export macro, result attribute, thread tags,
+ * and the rules every public call follows.
  *
  * Thread tags. Every public function names the one thread it may be called
  * from; the tags mean exactly this:
@@ -13,6 +14,22 @@
  *                  Where calls from several threads must not overlap, the
  *                  function says so.
  *   [gpu-thread]   the thread that owns the GL context (gpu/ only).
+ *
+ * Names. A struct the caller fills to set up an object or a call ends in
+ * _config; a struct a call fills to say what it did ends in _report. Pairs
+ * of verbs: create/destroy, post/collect, set/get.
+ *
+ * Defaults. Zero in a field of a _config means the default given in its
+ * comment. fg_X_config_resolve(in, out), where a struct has one, writes the
+ * values a call will use (or returns the error it would); fg_X_get_config
+ * returns those an object uses.
+ *
+ * NULL and programmer errors. A call that returns fg_result answers a NULL
+ * argument it needs with FG_ERR_NULL and changes nothing. A call that
+ * cannot report (a getter, a void function, a count) treats a NULL handle
+ * or output pointer as a programmer error: an assert in Debug and test
+ * builds; in a release build it returns without effect (0 or NULL for a
+ * value). destroy(NULL) is a no-op.
  */
 #ifndef FULGUR_DEFS_H
 #define FULGUR_DEFS_H

@@ -27,8 +27,8 @@ typedef struct fg_engine_config {
     double sample_rate_hz;        /* 48000; must lie in [8000, 384000] */
     uint32_t max_block_frames;    /* 4096; the largest nframes render accepts, <= 65536 */
     uint32_t channels;            /* 2; 1 = one ear at the listener's centre, 2 = two ears */
-    uint32_t max_voices;          /* 64; discharges alive at once (posted, sounding or uncollected) */
-    uint32_t segment_capacity;    /* 131072; segments held by all live voices together */
+    uint32_t max_voices;          /* 64; voices alive at once (posted, sounding or uncollected) */
+    uint32_t segment_capacity;    /* 131072; segments held by all live discharges together */
     double speed_of_sound_m_s;    /* 343; 331.5 + 0.6 * (temperature in degC) */
     double ear_spacing_m;         /* 0.18; distance between the two ears */
     double max_lookahead_s;       /* 0.25; cap on the motion look-ahead (see fg_engine_render) */
@@ -39,6 +39,13 @@ typedef struct fg_engine_config {
     double air_pressure_kpa;      /* 101.325 */
 } fg_engine_config;
 
+/* The voice model a discharge is rendered with. */
+typedef enum fg_voice_model {
+    FG_MODEL_WM = 0,   /* one WM-wave per segment (Matsuyama) */
+    FG_MODEL_ABE = 1   /* Abe et al.: harmonic-series N-waves per node, falling in
+                        * pitch and level, pitch set by height, loudness ~ 1/r^2 */
+} fg_voice_model;
+
 /* Strokes of one discharge at most (the log-series tail is cut here). */
 #define FG_MAX_STROKES 32
 
@@ -48,7 +55,7 @@ typedef struct fg_engine_config {
 typedef struct fg_discharge {
     const fg_node *nodes;   /* borrowed for the duration of fg_engine_post */
     size_t node_count;
-    fg_sound_params sound;
+    fg_sound_config sound;
     double emit_time_s;     /* engine clock, >= 0, or FG_EMIT_NOW */
     uint32_t strokes;       /* 0: drawn from the log-series law; else 1..FG_MAX_STROKES */
     int continuous;         /* non-zero: re-emit the pattern until stopped (plasma ball, held gap) */
@@ -56,7 +63,7 @@ typedef struct fg_discharge {
     double repeat_max_s;
     double duration_s;      /* continuous: stop after this long; 0 = until fg_engine_stop */
     uint64_t seed;          /* T0 fluctuation, strokes, repeats, turbulence */
-    fg_propagation propagation; /* zero: free, still air */
+    fg_propagation_config propagation; /* zero: free, still air */
     fg_voice_model model;   /* FG_MODEL_WM (zero) or FG_MODEL_ABE */
 } fg_discharge;
 
@@ -70,7 +77,7 @@ typedef struct fg_listener {
     double velocity[3];  /* m/s; informational (geometry follows the pose each block) */
 } fg_listener;
 
-typedef struct fg_engine_stats {
+typedef struct fg_engine_report {
     uint64_t posted;            /* voices accepted by fg_engine_post */
     uint64_t dropped_posts;     /* posts refused for a full pool or queue */
     uint64_t adopted;           /* voices taken by the audio thread */
@@ -81,7 +88,7 @@ typedef struct fg_engine_stats {
     uint64_t skipped_repeats;   /* continuous repeats dropped for lack of instance slots */
     uint64_t blocks;            /* successful render calls of one frame or more */
     uint64_t blocks_over_budget;/* render calls that took longer than their frames last */
-} fg_engine_stats;
+} fg_engine_report;
 
 /* The start of each stroke of the discharge, seconds after its emit time,
  * exactly as fg_engine_post will schedule them (they depend on seed,
@@ -89,12 +96,18 @@ typedef struct fg_engine_stats {
  * 0, and returns count (1 for a continuous discharge). offsets_s may be NULL
  * to ask for the count. A picture uses this to flash with the sound.
  * [any-thread]
- * Returns 0 when discharge is NULL or strokes > FG_MAX_STROKES. */
+ * Returns 0 when strokes > FG_MAX_STROKES. A NULL discharge is a programmer
+ * error (fulgur/defs.h). */
 FG_API uint32_t fg_discharge_stroke_offsets(const fg_discharge *discharge, double *offsets_s,
                                             uint32_t max);
 
-/* Fills *config with the defaults. [any-thread] */
-FG_API void fg_engine_config_default(fg_engine_config *config);
+/* The configuration fg_engine_create would use for config: every zero
+ * field replaced by its default; config NULL gives all the defaults.
+ * *out is written only on success. [any-thread]
+ * Errors: FG_ERR_NULL out; the others as fg_engine_create's, but for
+ * FG_ERR_NO_MEMORY. */
+FG_API FG_NODISCARD fg_result fg_engine_config_resolve(const fg_engine_config *config,
+                                                       fg_engine_config *out);
 
 /* Creates an engine; every buffer the audio thread will touch is allocated
  * here. config may be NULL (all defaults). *out is owned by the caller until
@@ -120,7 +133,7 @@ FG_API void fg_engine_get_config(const fg_engine *engine, fg_engine_config *out)
  * [sim-thread]
  * Errors: FG_ERR_NULL engine/discharge/nodes; FG_ERR_TREE the tree fails
  * fg_tree_check; FG_ERR_NOT_FINITE / FG_ERR_ARGUMENT a parameter (see
- * fg_sound_params_check and fg_propagation_check, strokes > FG_MAX_STROKES,
+ * fg_sound_config_check and fg_propagation_config_resolve, strokes > FG_MAX_STROKES,
  * negative emit time other than FG_EMIT_NOW, continuous with strokes > 1,
  * repeat range outside (0, 10 s] or min > max, unknown model);
  * FG_ERR_CAPACITY more segments than segment_capacity (a ground image
@@ -136,13 +149,15 @@ FG_API FG_NODISCARD fg_result fg_engine_post(fg_engine *engine, const fg_dischar
 FG_API FG_NODISCARD fg_result fg_engine_stop(fg_engine *engine, fg_voice_id id);
 
 /* Reclaims the voices the audio thread has finished; returns how many.
- * [sim-thread] */
+ * [sim-thread] (A NULL engine here and in the getters below is a
+ * programmer error: fulgur/defs.h.) */
 FG_API size_t fg_engine_collect(fg_engine *engine);
 
 /* Writes nframes of every channel into out[channel][0..nframes). Adopts up
  * to max_adopt_per_block posted voices, reads the latest listener pose,
- * evaluates every WM-wave overlapping the block for each ear, and retires
- * finished voices. Each sample is the exact average of the continuous
+ * renders every sounding voice through its model (a discharge: every wave
+ * overlapping the block, for each ear), and retires finished voices. With
+ * the WM-wave model each sample is the exact average of the continuous
  * pressure over its sample interval.
  * Moving listener: geometry follows the pose read at the start of each
  * block. An event joins the block loop when its waveform could start before
@@ -170,7 +185,7 @@ FG_API FG_NODISCARD fg_result fg_engine_set_listener(fg_engine *engine, const fg
 FG_API void fg_engine_get_listener(const fg_engine *engine, fg_listener *out);
 
 /* A snapshot of the counters. [any-thread] */
-FG_API void fg_engine_get_stats(const fg_engine *engine, fg_engine_stats *out);
+FG_API void fg_engine_get_report(const fg_engine *engine, fg_engine_report *out);
 
 /* The engine clock: frames rendered so far, and the same in seconds.
  * [any-thread] */

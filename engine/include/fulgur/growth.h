@@ -73,6 +73,14 @@ typedef struct fg_growth_report {
     int solver_iterations;     /* DBM: CG iterations over all of them */
 } fg_growth_report;
 
+/* Copies *in to *out with every zero field replaced by its default (the
+ * values fg_grow_matsuyama and fg_grow_dbm use). *out is written only on
+ * success. [any-thread]
+ * Errors: FG_ERR_NULL in or out; FG_ERR_NOT_FINITE a parameter;
+ * FG_ERR_ARGUMENT step_m <= 0 or another parameter out of its range. */
+FG_API FG_NODISCARD fg_result fg_growth_config_resolve(const fg_growth_config *in,
+                                                       fg_growth_config *out);
+
 /* Grows a Matsuyama leader in the field that source reads (not modified)
  * and writes it into out, which is cleared first. report may be NULL.
  * [sim-thread]

@@ -30,7 +30,7 @@
  * are grown after the main channel, first-come first-grown, so the main
  * channel is nodes 0 .. main_nodes - 1, each flagged FG_NODE_MAIN.
  *
- * Designer thunder (Glassner part 2): blocks placed along the skeleton
+ * Designer thunder (Glassner part 2): features placed along the skeleton
  * (start and end as fractions of its length from the root) reshape it
  * before the walk:
  *   clap   the stretch becomes an arc of a circle centred on the listener,
@@ -45,7 +45,7 @@
  *   roar   the stretch keeps its course but turns harder: the mean turn is
  *          multiplied by 1 + 3 a.
  * A clap or rumble stretch starts at the skeleton's own point at `start`
- * (or where the block before it ended, if they touch); the plain stretches
+ * (or where the feature before it ended, if they touch); the plain stretches
  * between them are the original skeleton sheared linearly to join the ends,
  * so the channel still ends at the strike point.
  */
@@ -59,26 +59,26 @@
 #include "fulgur/result.h"
 #include "fulgur/tree.h"
 
-/* Blocks of one design at most. */
-#define FG_THUNDER_MAX_BLOCKS 16
+/* Features of one design at most. */
+#define FG_THUNDER_MAX_FEATURES 16
 /* Skeleton points at most. */
 #define FG_LIGHTNING_MAX_SKELETON 65536
 
-typedef enum fg_thunder_feature {
+typedef enum fg_thunder_kind {
     FG_THUNDER_CLAP = 1,
     FG_THUNDER_RUMBLE = 2,
     FG_THUNDER_ROAR = 3
-} fg_thunder_feature;
+} fg_thunder_kind;
 
-typedef struct fg_thunder_block {
-    fg_thunder_feature feature;
+typedef struct fg_thunder_feature {
+    fg_thunder_kind kind;
     double start, end;  /* fractions of the skeleton's length from the root:
                            0 <= start < end <= 1 */
     double amplitude;   /* strength of the shaping, (0, 1]; 0 means 1 */
-} fg_thunder_block;
+} fg_thunder_feature;
 
 /* Zero in any field means the default given in its comment. */
-typedef struct fg_lightning_params {
+typedef struct fg_lightning_config {
     const double *skeleton_m;   /* x,y,z triples, root first; borrowed for the call.
                                    NULL: a random cloud-to-ground skeleton */
     size_t skeleton_points;     /* 2 .. FG_LIGHTNING_MAX_SKELETON when given */
@@ -91,56 +91,56 @@ typedef struct fg_lightning_params {
     double branch_probability;  /* per node: 0.0137; negative: no branches; <= 1 */
     double branch_length_m;     /* mean length of a first-order branch: 400 */
     uint32_t branch_depth;      /* deepest branch order: 2; at most 8 */
-    const fg_thunder_block *blocks; /* borrowed for the call; may be NULL if block_count is 0 */
-    size_t block_count;         /* at most FG_THUNDER_MAX_BLOCKS */
+    const fg_thunder_feature *features; /* borrowed for the call; NULL if feature_count is 0 */
+    size_t feature_count;       /* at most FG_THUNDER_MAX_FEATURES */
     double listener_m[3];       /* where the designed thunder is heard */
     uint32_t max_nodes;         /* refuse to grow past this many nodes: 1000000 */
     uint64_t seed;              /* same seed, same tree */
-} fg_lightning_params;
+} fg_lightning_config;
 
-/* Where each block ended up on the main channel. */
+/* Where each feature ended up on the main channel. */
 typedef struct fg_lightning_stretch {
     size_t first_node, last_node; /* main-channel nodes whose projection on the
-                                     skeleton falls in the block (inclusive);
+                                     skeleton falls in the feature (inclusive);
                                      first_node = main_nodes if none does */
-    double distance_m;            /* listener to the skeleton at the block's start;
+    double distance_m;            /* listener to the skeleton at the feature's start;
                                      for a clap, the arc's radius */
 } fg_lightning_stretch;
 
-typedef struct fg_lightning_info {
+typedef struct fg_lightning_report {
     size_t main_nodes;        /* nodes 0 .. main_nodes - 1: root to the strike */
     size_t segments;          /* all nodes but the root */
     double main_length_m;     /* length of the main channel */
     double skeleton_length_m; /* length of the (reshaped) skeleton */
-    fg_lightning_stretch blocks[FG_THUNDER_MAX_BLOCKS]; /* in the order given */
-} fg_lightning_info;
+    fg_lightning_stretch features[FG_THUNDER_MAX_FEATURES]; /* in the order given */
+} fg_lightning_report;
 
 /* Copies *in to *out with every zero field replaced by its default (the
  * pointers are copied, not the arrays). [any-thread]
  * Errors: FG_ERR_NULL in/out, or skeleton_m NULL with skeleton_points > 0,
- * or blocks NULL with block_count > 0; FG_ERR_NOT_FINITE a NaN/inf number,
- * skeleton point or block field; FG_ERR_ARGUMENT a negative length or
+ * or features NULL with feature_count > 0; FG_ERR_NOT_FINITE a NaN/inf number,
+ * skeleton point or feature field; FG_ERR_ARGUMENT a negative length or
  * angle, turn_mean_deg >= 90, max_deviation_deg >= 180, branch_probability
  * > 1, branch_depth > 8, fewer than 2 or more than
  * FG_LIGHTNING_MAX_SKELETON skeleton points, a skeleton point below the
  * ground or the root on it, two consecutive skeleton points equal, more
- * than FG_THUNDER_MAX_BLOCKS blocks, an unknown feature, a block outside
- * 0 <= start < end <= 1, amplitude outside [0, 1], two blocks
+ * than FG_THUNDER_MAX_FEATURES features, an unknown kind, a feature outside
+ * 0 <= start < end <= 1, amplitude outside [0, 1], two features
  * overlapping. *out is written only on success. */
-FG_API FG_NODISCARD fg_result fg_lightning_params_resolve(const fg_lightning_params *in,
-                                                          fg_lightning_params *out);
+FG_API FG_NODISCARD fg_result fg_lightning_config_resolve(const fg_lightning_config *in,
+                                                          fg_lightning_config *out);
 
-/* Reshapes the skeleton for the blocks, walks it and grows the branches,
+/* Reshapes the skeleton for the features, walks it and grows the branches,
  * appending the bolt to out, which must be empty (root = node 0, at the
- * skeleton's root). info (may be NULL) receives the figures above. out
+ * skeleton's root). report (may be NULL) receives the figures above. out
  * stays owned by the caller. Deterministic for a given seed. [sim-thread]
- * Errors: those of fg_lightning_params_resolve; FG_ERR_NULL out;
+ * Errors: those of fg_lightning_config_resolve; FG_ERR_NULL out;
  * FG_ERR_ARGUMENT out not empty, or a clap/rumble shape that would take
  * the skeleton below the ground; FG_ERR_UNREACHABLE the walk did not reach
  * the skeleton's end within 50 times its length; FG_ERR_CAPACITY more than
  * max_nodes nodes; FG_ERR_NO_MEMORY. On any error out is left empty and
- * *info untouched. */
-FG_API FG_NODISCARD fg_result fg_lightning_generate(const fg_lightning_params *params,
-                                                    fg_tree *out, fg_lightning_info *info);
+ * *report untouched. */
+FG_API FG_NODISCARD fg_result fg_lightning_generate(const fg_lightning_config *config,
+                                                    fg_tree *out, fg_lightning_report *report);
 
 #endif

@@ -28,7 +28,7 @@ typedef enum fg_absorption {
 
 #define FG_ABSORPTION_BANDS 12
 
-typedef struct fg_propagation {
+typedef struct fg_propagation_config {
     /* Refraction (Glassner): sound travels on circular arcs of this radius;
      * a listener at horizontal distance D hears no source below D^2/2R,
      * faded in over that zone. 0 = straight rays; else 20 km .. 200 km (a
@@ -49,14 +49,7 @@ typedef struct fg_propagation {
      * frequencies, up to -10 dB for a source straight behind the head on
      * the far side, on top of the per-ear delays. */
     int head_shadow;
-} fg_propagation;
-
-/* The voice model a discharge is rendered with. */
-typedef enum fg_voice_model {
-    FG_MODEL_WM = 0,   /* one WM-wave per segment (Matsuyama) */
-    FG_MODEL_ABE = 1   /* Abe et al.: harmonic-series N-waves per node, falling in
-                        * pitch and level, pitch set by height, loudness ~ 1/r^2 */
-} fg_voice_model;
+} fg_propagation_config;
 
 /* Refraction radii accepted when refraction is on, and a storm's. */
 #define FG_REFRACTION_MIN_M 20e3
@@ -69,10 +62,14 @@ typedef enum fg_voice_model {
 #define FG_ABE_FIR_DEFAULT_DISTANCE_M 1000.0
 #define FG_GROUND_DEFAULT_REFLECTION 0.9
 
-/* Checks every field: finite; radius 0 or within the range above;
+/* Checks every field (finite; radius 0 or within the range above;
  * turbulence >= 0 and < 1 s, length >= 0; a known absorption mode; Abe
- * distance >= 0; reflection in [0, 1]. [any-thread]
+ * distance >= 0; reflection in [0, 1]) and writes to *out the values a
+ * discharge posted with *in is rendered with: the parameters of the
+ * effects that are on, with their zeros replaced by the defaults above.
+ * *out is written only on success and may be in. [any-thread]
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT. */
-FG_API FG_NODISCARD fg_result fg_propagation_check(const fg_propagation *p);
+FG_API FG_NODISCARD fg_result fg_propagation_config_resolve(const fg_propagation_config *in,
+                                                            fg_propagation_config *out);
 
 #endif

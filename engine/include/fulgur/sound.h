@@ -15,14 +15,14 @@
 #include "fulgur/defs.h"
 #include "fulgur/result.h"
 
-typedef struct fg_sound_params {
+typedef struct fg_sound_config {
     double t0_s;          /* baseline N-wave half-duration T0, seconds */
     double r0_m;          /* baseline distance r0, metres */
     double ps0_pa;        /* peak pressure at r0, pascals */
     double sigma0;        /* stretch parameter (0.524, Wright 1983) */
     double t0_jitter;     /* per-segment T0 fluctuation, relative: T0 * (1 + u), |u| <= jitter */
     double return_stroke_speed_m_s; /* speed the return stroke climbs the channel */
-} fg_sound_params;
+} fg_sound_config;
 
 typedef enum fg_preset {
     FG_PRESET_SPARK_BALLS = 0, /* 2 cm gap, l = 1 mm, r0 = 5 cm, T0 = 30 us */
@@ -39,7 +39,7 @@ typedef struct fg_preset_scale {
 
 /* Fills *out with the sound parameters of a preset. [any-thread]
  * Errors: FG_ERR_NULL out; FG_ERR_ARGUMENT unknown preset. */
-FG_API FG_NODISCARD fg_result fg_preset_sound(fg_preset preset, fg_sound_params *out);
+FG_API FG_NODISCARD fg_result fg_preset_sound(fg_preset preset, fg_sound_config *out);
 
 /* Fills *out with the geometric scale of a preset. [any-thread]
  * Errors: FG_ERR_NULL out; FG_ERR_ARGUMENT unknown preset. */
@@ -54,6 +54,6 @@ FG_API FG_NODISCARD fg_result fg_preset_from_name(const char *name, fg_preset *o
 /* Checks every field: all finite; t0_s, r0_m, ps0_pa > 0; sigma0 >= 0;
  * 0 <= t0_jitter < 1; return_stroke_speed_m_s > 0. [any-thread]
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT. */
-FG_API FG_NODISCARD fg_result fg_sound_params_check(const fg_sound_params *params);
+FG_API FG_NODISCARD fg_result fg_sound_config_check(const fg_sound_config *config);
 
 #endif

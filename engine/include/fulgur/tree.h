@@ -56,6 +56,11 @@ FG_API FG_NODISCARD fg_result fg_tree_check(const fg_node *nodes, size_t count,
  * written into buf (always NUL-terminated, truncated to size). [any-thread] */
 FG_API void fg_tree_fault_describe(const fg_tree_fault *fault, char *buf, size_t size);
 
+/* Moves every node of nodes[0..count) by offset_m (metres): x += offset_m[0]
+ * and so on, parents and flags untouched. The caller owns nodes. NULL nodes
+ * with count > 0, or a NULL offset, is a programmer error. [any-thread] */
+FG_API void fg_tree_translate(fg_node *nodes, size_t count, const double offset_m[3]);
+
 /* A growable tree owned by the caller, used by the generators. */
 typedef struct fg_tree fg_tree;
 

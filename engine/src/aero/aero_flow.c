@@ -25,6 +25,7 @@
 #include <string.h>
 
 #include "aero_internal.h"
+#include "fg_array.h"
 #include "fluid/fluid_internal.h"
 
 #define SPIN_TIME 2.0       /* in D / v0 */
@@ -39,14 +40,10 @@ typedef struct series {
 
 static int series_push(series *s, const double *values)
 {
-    if (s->n == s->cap) {
-        size_t cap = s->cap ? 2 * s->cap : 1024;
-        double *grown = realloc(s->v, cap * s->width * sizeof(double));
-        if (!grown)
-            return -1;
-        s->v = grown;
-        s->cap = cap;
-    }
+    double *grown = fg_array_grow(s->v, &s->cap, s->n + 1, s->width * sizeof(double), 1024);
+    if (!grown)
+        return -1;
+    s->v = grown;
     memcpy(&s->v[s->n * s->width], values, s->width * sizeof(double));
     s->n++;
     return 0;

@@ -10,7 +10,7 @@
 
 #include "aero_internal.h"
 #include "fluid/fluid_internal.h"
-#include "vec3_internal.h" /* FG_PI */
+#include "fg_math.h"
 
 #define MAX_THREADS 64
 #define DEFAULT_PERIODS 24

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 
 #include "aero_internal.h"
-#include "vec3_internal.h" /* FG_PI */
+#include "fg_math.h"
 
 
 static void mean_rms(const double *x, size_t n, double *mean, double *rms)

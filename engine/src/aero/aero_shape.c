@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "aero_internal.h"
-#include "vec3_internal.h" /* FG_PI */
+#include "fg_math.h"
 
 #define SYMMETRY_POINTS 256
 #define SYMMETRY_TOLERANCE 1e-9 /* of the radius */

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "aero_internal.h"
-#include "vec3_internal.h" /* FG_PI */
+#include "fg_math.h"
 
 struct fg_aero_texture {
     fg_aero_texture_desc desc;

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fg_array.h"
 #include "fluid_state_internal.h"
 
 /* Faces with less fluid than this are closed: a sliver would couple two
@@ -190,15 +191,12 @@ static fg_result cut_cells(fg_fluid *f)
                     continue;
                 if (fabs(an[0]) + fabs(an[1]) + fabs(an[2]) < 1e-9 * area)
                     continue;
-                if (count == cap) {
-                    cap = cap ? 2 * cap : 256;
-                    fg_fluid_cut_cell *grown = realloc(cut, cap * sizeof *cut);
-                    if (!grown) {
-                        free(cut);
-                        return FG_ERR_NO_MEMORY;
-                    }
-                    cut = grown;
+                fg_fluid_cut_cell *grown = fg_array_grow(cut, &cap, count + 1, sizeof *cut, 256);
+                if (!grown) {
+                    free(cut);
+                    return FG_ERR_NO_MEMORY;
                 }
+                cut = grown;
                 cut[count].cell = c;
                 memcpy(cut[count].area_normal, an, sizeof an);
                 count++;
@@ -236,15 +234,13 @@ static fg_result wall_links(fg_fluid *f)
                             if (other > 0.0)
                                 continue;
                             double theta = sdf[id] / (sdf[id] - other);
-                            if (count == cap) {
-                                cap = cap ? 2 * cap : 256;
-                                fg_fluid_wall_link *grown = realloc(links, cap * sizeof *links);
-                                if (!grown) {
-                                    free(links);
-                                    return FG_ERR_NO_MEMORY;
-                                }
-                                links = grown;
+                            fg_fluid_wall_link *grown =
+                                fg_array_grow(links, &cap, count + 1, sizeof *links, 256);
+                            if (!grown) {
+                                free(links);
+                                return FG_ERR_NO_MEMORY;
                             }
+                            links = grown;
                             links[count++] = (fg_fluid_wall_link){
                                 .face = id, .component = (uint8_t)a, .dir_axis = (uint8_t)b,
                                 .dir_side = (uint8_t)side,

@@ -19,7 +19,7 @@
 #include <string.h>
 
 #include "fluid_state_internal.h"
-#include "fp_env_internal.h"
+#include "core/fp_env_internal.h"
 
 fg_result fg_fluid_step(fg_fluid *f, double dt, const fg_fluid_hooks *hooks)
 {

@@ -1,0 +1,43 @@
+/* A cascade of up to three biquads, run in transposed direct form II with
+ * double state. Coefficients and state live in one fixed-size struct;
+ * processing never allocates and keeps its state across blocks, so a
+ * signal split into blocks anywhere gives exactly the one-shot output. */
+#ifndef FULGUR_IIR_INTERNAL_H
+#define FULGUR_IIR_INTERNAL_H
+
+#include <stddef.h>
+
+#define FG_IIR_MAX_SECTIONS 3
+
+/* H(z) = (b0 + b1 z^-1 + b2 z^-2) / (1 + a1 z^-1 + a2 z^-2). A first-order
+ * section has b2 = a2 = 0. */
+typedef struct fg_biquad {
+    double b0, b1, b2, a1, a2;
+} fg_biquad;
+
+typedef struct fg_iir {
+    fg_biquad sec[FG_IIR_MAX_SECTIONS];
+    unsigned sections;
+    double z[FG_IIR_MAX_SECTIONS][2];
+} fg_iir;
+
+/* Clears the state (silence before the first sample). */
+void fg_iir_reset(fg_iir *f);
+
+/* Filters buf[0..n) in place. [audio-thread]: bounded, no allocation.
+ * State magnitudes below 1e-30 are snapped to zero on every sample, so a
+ * decaying tail ends in exact zeros and never becomes denormal, whatever
+ * the floating-point environment. */
+void fg_iir_process(fg_iir *f, float *buf, size_t n);
+
+/* e^{-jw} and e^{-2jw}, for evaluating many responses at one frequency. */
+typedef struct fg_phasor {
+    double c1, s1, c2, s2;
+} fg_phasor;
+
+fg_phasor fg_phasor_at(double w);
+
+/* |H(e^{jw})| of the cascade in decibels, w = 2 pi f / fs rad/sample. */
+double fg_iir_db(const fg_iir *f, double w);
+
+#endif

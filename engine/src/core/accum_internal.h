@@ -1,0 +1,38 @@
+/* A difference-domain accumulator: one audio block of one bus and ear,
+ * into which waves that are piecewise polynomial (the WM-wave) are added as
+ * third differences at their breakpoints, so a wave costs per breakpoint,
+ * never per sample. y[k] for k in [0, n) is rebuilt from the three samples
+ * before the block (state) and the third differences (d3). Each block
+ * starts from exact values, so rounding never drifts across blocks.
+ * [audio-thread] apart from fg_accum_begin, which sets up the storage. */
+#ifndef FULGUR_ACCUM_INTERNAL_H
+#define FULGUR_ACCUM_INTERNAL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+typedef struct fg_accum {
+    double *d3;        /* n entries, zeroed by fg_accum_begin */
+    size_t n;
+    double state[3];   /* y[-1], y[-2], y[-3] */
+    bool touched;      /* some wave contributed */
+} fg_accum;
+
+/* Where a wave stands relative to the block it is added to. */
+typedef enum fg_wave_status {
+    FG_WAVE_PENDING,  /* starts after this block */
+    FG_WAVE_SOUNDING, /* contributes to this block */
+    FG_WAVE_DONE      /* ended before this block: contributes nothing here or later */
+} fg_wave_status;
+
+void fg_accum_begin(fg_accum *b, double *d3, size_t n);
+
+/* Starts the next block of n on the same storage, clearing only what the
+ * previous block wrote. The storage must have been zero when first used. */
+void fg_accum_restart(fg_accum *b, size_t n);
+
+/* Integrates the block into y[0..n), adding gain * y into out. An untouched
+ * block adds nothing. */
+void fg_accum_end(const fg_accum *b, float *out, float gain);
+
+#endif

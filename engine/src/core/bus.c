@@ -1,0 +1,168 @@
+#include <stdlib.h>
+#include <string.h>
+
+#include "bus_internal.h"
+#include "air/head_shadow_internal.h"
+#include "air/absorb_filter_internal.h"
+
+/* The band centres: 10 m to 30 km, log-spaced. */
+#define BAND_NEAR_M 10.0
+#define BAND_FAR_M 30000.0
+
+static bool is_fir(unsigned b)
+{
+    return b % FG_BUS_PLAIN == FG_BUS_FIR;
+}
+
+static bool is_band(unsigned b)
+{
+    unsigned k = b % FG_BUS_PLAIN;
+    return k >= FG_BUS_BAND0 && k < FG_BUS_FIR;
+}
+
+fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
+                          double c_m_s, const fg_air *air)
+{
+    memset(s, 0, sizeof *s);
+    size_t planes = (size_t)FG_BUS_COUNT * channels;
+    s->d3 = calloc(planes * max_frames, sizeof *s->d3);
+    s->pre = calloc(planes * max_frames, sizeof *s->pre);
+    s->fir = calloc(4, sizeof *s->fir);
+    if (!s->d3 || !s->pre || !s->fir) {
+        fg_bus_set_deinit(s);
+        return FG_ERR_NO_MEMORY;
+    }
+    s->channels = channels;
+    s->max_frames = max_frames;
+    s->fs_hz = fs_hz;
+    s->air = *air;
+    fg_result r = fg_band_plan_init(&s->plan, BAND_NEAR_M, BAND_FAR_M, FG_ABSORPTION_BANDS);
+    for (int i = 0; i < 4 && r == FG_OK; i++)
+        r = fg_abe_fir_init(&s->fir[i], fs_hz);
+    if (r != FG_OK) {
+        fg_bus_set_deinit(s);
+        return r;
+    }
+    fg_biquad shelf = fg_head_shelf(-10.0, fs_hz, c_m_s);
+    for (unsigned b = 0; b < FG_BUS_PLAIN; b++) {
+        for (unsigned ch = 0; ch < 2; ch++) {
+            s->shelf[b][ch] = (fg_iir){.sec = {shelf}, .sections = 1};
+            fg_iir_reset(&s->shelf[b][ch]);
+        }
+    }
+    for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
+        for (unsigned ch = 0; ch < channels; ch++) {
+            size_t plane = (size_t)b * channels + ch;
+            fg_accum_begin(&s->bus[b].accum[ch], s->d3 + plane * max_frames, max_frames);
+            s->bus[b].pre[ch] = s->pre + plane * max_frames;
+            s->bus[b].quiet[ch] = FG_ABE_FIR_HISTORY;
+        }
+    }
+    return FG_OK;
+}
+
+void fg_bus_set_deinit(fg_bus_set *s)
+{
+    free(s->d3);
+    free(s->pre);
+    free(s->fir);
+    s->d3 = NULL;
+    s->pre = NULL;
+    s->fir = NULL;
+}
+
+void fg_bus_set_design_bands(fg_bus_set *s)
+{
+    if (s->bands_designed)
+        return;
+    for (unsigned k = 0; k < FG_ABSORPTION_BANDS; k++) {
+        fg_iir f;
+        fg_absorb_design(&f, &s->air, s->plan.centre_m[k], s->fs_hz);
+        fg_iir_reset(&f);
+        for (unsigned twin = 0; twin < 2; twin++)
+            s->band[twin][k][0] = s->band[twin][k][1] = f;
+    }
+    s->bands_designed = true;
+}
+
+unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m)
+{
+    return FG_BUS_BAND0 + fg_band_nearest(&s->plan, r_m);
+}
+
+void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
+{
+    for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
+        for (unsigned ch = 0; ch < s->channels; ch++) {
+            fg_bus *bus = &s->bus[b];
+            fg_accum_restart(&bus->accum[ch], n);
+            if (bus->pre_used[ch])
+                memset(bus->pre[ch], 0, s->max_frames * sizeof(float));
+            bus->pre_used[ch] = false;
+        }
+    }
+}
+
+float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch)
+{
+    s->bus[b].pre_used[ch] = true;
+    return s->bus[b].pre[ch];
+}
+
+/* The band filter of bus b (a band bus or its twin), ear ch. */
+static fg_iir *band_filter(fg_bus_set *s, unsigned b, unsigned ch)
+{
+    return &s->band[b / FG_BUS_PLAIN][b % FG_BUS_PLAIN - FG_BUS_BAND0][ch];
+}
+
+static bool ringing(const fg_iir *f)
+{
+    for (unsigned i = 0; i < f->sections; i++)
+        if (f->z[i][0] != 0.0 || f->z[i][1] != 0.0)
+            return true;
+    return false;
+}
+
+/* Whether bus b, ear ch, has input or a tail to play this block. Filters
+ * are looked at only once they have had input. */
+static bool live(const fg_bus *bus, unsigned b, unsigned ch)
+{
+    if (bus->accum[ch].touched || bus->pre_used[ch] || bus->ringing[ch])
+        return true;
+    return is_fir(b) && bus->quiet[ch] < FG_ABE_FIR_HISTORY;
+}
+
+void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
+{
+    for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
+        for (unsigned ch = 0; ch < s->channels; ch++) {
+            fg_bus *bus = &s->bus[b];
+            if (b == FG_BUS_DRY && !bus->pre_used[ch]) {
+                fg_accum_end(&bus->accum[ch], out[ch], 1.0f);
+                continue;
+            }
+            if (!live(bus, b, ch))
+                continue;
+            bool input = bus->accum[ch].touched || bus->pre_used[ch];
+            float *x = bus->pre[ch];
+            bus->pre_used[ch] = true; /* zero it again next block */
+            fg_accum_end(&bus->accum[ch], x, 1.0f);
+            bool tail = false;
+            if (is_band(b)) {
+                fg_iir_process(band_filter(s, b, ch), x, n);
+                tail = ringing(band_filter(s, b, ch));
+            }
+            if (is_fir(b)) {
+                fg_abe_fir_process(&s->fir[2 * (b / FG_BUS_PLAIN) + ch], x, n);
+                bus->quiet[ch] = input ? 0 : bus->quiet[ch] + n;
+            }
+            if (b >= FG_BUS_PLAIN) {
+                fg_iir_process(&s->shelf[b - FG_BUS_PLAIN][ch], x, n);
+                tail = tail || ringing(&s->shelf[b - FG_BUS_PLAIN][ch]);
+            }
+            bus->ringing[ch] = tail;
+            for (uint32_t i = 0; i < n; i++)
+                out[ch][i] += x[i];
+        }
+    }
+}

@@ -1,0 +1,85 @@
+/* Filter buses: where the audio thread sums each ear's waves before the
+ * air's filters, so filtering costs per bus, never per segment.
+ *
+ * Bus FG_BUS_DRY has no filter; FG_BUS_BAND0 + k carries sources near the
+ * k-th ISO 9613-1 band's centre distance through that band's fitted IIR;
+ * FG_BUS_FIR carries Abe's 200 Hz FIR. Each has a head-shadowed twin at
+ * index + FG_BUS_PLAIN, which adds the far-ear shelf. The buses are shared
+ * by every voice: the air's response depends only on the distance band. */
+#ifndef FULGUR_BUS_INTERNAL_H
+#define FULGUR_BUS_INTERNAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "air/abe_lowpass_internal.h"
+#include "air/air_absorption_internal.h"
+#include "air/distance_bands_internal.h"
+#include "fulgur/propagation.h"
+#include "air/iir_internal.h"
+#include "accum_internal.h"
+
+enum {
+    FG_BUS_DRY = 0,
+    FG_BUS_BAND0 = 1,
+    FG_BUS_FIR = FG_BUS_BAND0 + FG_ABSORPTION_BANDS,
+    FG_BUS_PLAIN = FG_BUS_FIR + 1,
+    FG_BUS_COUNT = 2 * FG_BUS_PLAIN
+};
+
+typedef struct fg_bus {
+    fg_accum accum[2];   /* difference-domain input (the WM-waves), per ear */
+    float *pre[2];       /* the ear's signal before the filters */
+    bool pre_used[2];    /* something was written into pre this block */
+    uint32_t quiet[2];   /* frames since the FIR last had input */
+    bool ringing[2];     /* the IIR filters still hold a tail; audio thread only */
+} fg_bus;
+
+typedef struct fg_bus_set {
+    fg_bus bus[FG_BUS_COUNT];
+    unsigned channels;
+    uint32_t max_frames;
+    double *d3;          /* FG_BUS_COUNT * channels * max_frames */
+    float *pre;          /* the same count of floats */
+    /* filters: shared coefficients, state per ear */
+    fg_band_plan plan;
+    fg_iir band[2][FG_ABSORPTION_BANDS][2]; /* [plain, shadowed twin][band][ear] */
+    bool bands_designed; /* sim thread only: the audio thread touches a band's
+                          * filter after adopting a voice that needed it, so
+                          * the inbox ring orders the design before */
+    fg_abe_fir *fir;     /* [2 (plain, shadowed)][2 ears] */
+    fg_iir shelf[FG_BUS_PLAIN][2];
+    fg_air air;
+    double fs_hz;
+} fg_bus_set;
+
+/* Allocates the buses for max_frames-frame blocks. [main-thread] */
+fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
+                          double c_m_s, const fg_air *air);
+void fg_bus_set_deinit(fg_bus_set *s);
+
+/* Designs the ISO 9613-1 band filters the first time a voice needs them
+ * (tens of milliseconds). [sim-thread] */
+void fg_bus_set_design_bands(fg_bus_set *s);
+
+/* The band bus for a source r_m away. */
+unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m);
+
+/* Starts a block of n frames on every bus. [audio-thread] */
+void fg_bus_set_begin(fg_bus_set *s, uint32_t n);
+
+/* The float buffer of bus b, ear ch, for waves rendered sample by sample. */
+float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch);
+
+/* The difference-domain accumulator of bus b, ear ch, for waves added per
+ * breakpoint. [audio-thread] */
+static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
+{
+    return &s->bus[b].accum[ch];
+}
+
+/* Filters every bus with input or a ringing tail and adds it to out.
+ * [audio-thread] */
+void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n);
+
+#endif

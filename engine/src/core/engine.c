@@ -1,0 +1,227 @@
+/* The engine object: creation with the storage of every kind of source,
+ * destruction, and the any-thread getters. */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine_internal.h"
+#include "fg_rules.h"
+
+#define MAX_BLOCK_LIMIT 65536u
+#define MAX_VOICES_LIMIT 65536u
+#define SEGMENT_LIMIT (1u << 26)
+#define SETTING_LIMIT 10.0 /* metres of ear spacing, seconds of look-ahead */
+
+/* The defaults, as engine.h documents them. */
+static const fg_engine_config defaults = {
+    .sample_rate_hz = 48000.0,
+    .max_block_frames = 4096,
+    .channels = 2,
+    .max_voices = 64,
+    .segment_capacity = 131072,
+    .speed_of_sound_m_s = 343.0,
+    .ear_spacing_m = 0.18,
+    .max_lookahead_s = 0.25,
+    .max_adopt_per_block = 8,
+    .air_temperature_k = 293.15,
+    .air_humidity_pct = 70.0,
+    .air_pressure_kpa = 101.325,
+};
+
+fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config *out)
+{
+    if (!out)
+        return FG_ERR_NULL;
+    if (!in) {
+        *out = defaults;
+        return FG_OK;
+    }
+    if (!isfinite(in->sample_rate_hz) || !isfinite(in->speed_of_sound_m_s) ||
+        !isfinite(in->ear_spacing_m) || !isfinite(in->max_lookahead_s) ||
+        !isfinite(in->air_temperature_k) || !isfinite(in->air_humidity_pct) ||
+        !isfinite(in->air_pressure_kpa))
+        return FG_ERR_NOT_FINITE;
+    if (in->sample_rate_hz != 0 && (in->sample_rate_hz < 8000 || in->sample_rate_hz > 384000))
+        return FG_ERR_SAMPLE_RATE;
+    if (in->max_block_frames > MAX_BLOCK_LIMIT || (in->channels != 0 && in->channels > 2) ||
+        in->max_voices > MAX_VOICES_LIMIT || in->segment_capacity > SEGMENT_LIMIT ||
+        in->speed_of_sound_m_s < 0 || in->ear_spacing_m < 0 || in->ear_spacing_m > SETTING_LIMIT ||
+        in->max_lookahead_s < 0 || in->max_lookahead_s > SETTING_LIMIT ||
+        in->max_adopt_per_block > MAX_VOICES_LIMIT ||
+        (in->air_temperature_k != 0 && (in->air_temperature_k < 200 || in->air_temperature_k > 350)) ||
+        in->air_humidity_pct < 0 || in->air_humidity_pct > 100 ||
+        (in->air_pressure_kpa != 0 && (in->air_pressure_kpa < 10 || in->air_pressure_kpa > 200)))
+        return FG_ERR_ARGUMENT;
+    *out = (fg_engine_config){
+        .sample_rate_hz = FG_DEF(in->sample_rate_hz, defaults.sample_rate_hz),
+        .max_block_frames = FG_DEF(in->max_block_frames, defaults.max_block_frames),
+        .channels = FG_DEF(in->channels, defaults.channels),
+        .max_voices = FG_DEF(in->max_voices, defaults.max_voices),
+        .segment_capacity = FG_DEF(in->segment_capacity, defaults.segment_capacity),
+        .speed_of_sound_m_s = FG_DEF(in->speed_of_sound_m_s, defaults.speed_of_sound_m_s),
+        .ear_spacing_m = FG_DEF(in->ear_spacing_m, defaults.ear_spacing_m),
+        .max_lookahead_s = FG_DEF(in->max_lookahead_s, defaults.max_lookahead_s),
+        .max_adopt_per_block = FG_DEF(in->max_adopt_per_block, defaults.max_adopt_per_block),
+        .air_temperature_k = FG_DEF(in->air_temperature_k, defaults.air_temperature_k),
+        .air_humidity_pct = FG_DEF(in->air_humidity_pct, defaults.air_humidity_pct),
+        .air_pressure_kpa = FG_DEF(in->air_pressure_kpa, defaults.air_pressure_kpa),
+    };
+    return FG_OK;
+}
+
+/* Adds kind to the engine: its shared storage and a state per voice slot. */
+static fg_result add_kind(fg_engine *e, const fg_source_kind *kind)
+{
+    if (e->kind_count == FG_MAX_SOURCE_KINDS)
+        return FG_ERR_ARGUMENT;
+    for (size_t i = 0; i < e->kind_count; i++)
+        if (e->kinds[i].kind == kind)
+            return FG_ERR_ARGUMENT;
+    fg_kind_slot *k = &e->kinds[e->kind_count];
+    k->kind = kind;
+    /* each state on cache lines of its own: the sim thread may write one
+     * voice's (a pose) while the audio thread reads another's */
+    size_t lines = (kind->voice_bytes + FG_CACHE_LINE - 1) / FG_CACHE_LINE;
+    k->stride = (lines ? lines : 1) * FG_CACHE_LINE;
+    if (k->stride > SIZE_MAX / e->cfg.max_voices)
+        return FG_ERR_NO_MEMORY;
+    k->pool = aligned_alloc(FG_CACHE_LINE, k->stride * e->cfg.max_voices);
+    if (!k->pool)
+        return FG_ERR_NO_MEMORY;
+    memset(k->pool, 0, k->stride * e->cfg.max_voices);
+    e->kind_count++;
+    return kind->create ? kind->create(&e->cfg, &k->storage) : FG_OK;
+}
+
+fg_result fg_engine_create_with(const fg_engine_config *config,
+                                const fg_source_kind *const *kinds, size_t count,
+                                fg_engine **out)
+{
+    if (!out || (count > 0 && !kinds))
+        return FG_ERR_NULL;
+    *out = NULL;
+    fg_engine_config cfg;
+    fg_result r = fg_engine_config_resolve(config, &cfg);
+    if (r != FG_OK)
+        return r;
+    fg_engine *e = calloc(1, sizeof *e);
+    if (!e)
+        return FG_ERR_NO_MEMORY;
+    e->cfg = cfg;
+    e->voices = calloc(cfg.max_voices, sizeof *e->voices);
+    e->free_slots = calloc(cfg.max_voices, sizeof *e->free_slots);
+    e->live = calloc(cfg.max_voices, 1);
+    e->active = calloc(cfg.max_voices, sizeof *e->active);
+    r = e->voices && e->free_slots && e->live && e->active ? FG_OK : FG_ERR_NO_MEMORY;
+    for (size_t i = 0; i < fg_builtin_kind_count && r == FG_OK; i++)
+        r = add_kind(e, fg_builtin_kinds[i]);
+    for (size_t i = 0; i < count && r == FG_OK; i++)
+        r = kinds[i] ? add_kind(e, kinds[i]) : FG_ERR_NULL;
+    bool ok = r == FG_OK && fg_ring_init(&e->inbox, cfg.max_voices, sizeof(fg_voice *));
+    ok = ok && fg_ring_init(&e->garbage, cfg.max_voices, sizeof(fg_voice *));
+    fg_air air = {cfg.air_temperature_k - 273.15, cfg.air_humidity_pct, cfg.air_pressure_kpa};
+    if (r == FG_OK)
+        r = ok ? fg_bus_set_init(&e->buses, cfg.channels, cfg.max_block_frames,
+                                 cfg.sample_rate_hz, cfg.speed_of_sound_m_s, &air)
+               : FG_ERR_NO_MEMORY;
+    if (r != FG_OK) {
+        fg_engine_destroy(e);
+        return r;
+    }
+    for (uint32_t i = 0; i < cfg.max_voices; i++) {
+        e->voices[i].slot = i;
+        atomic_init(&e->voices[i].stop, false);
+        e->free_slots[i] = cfg.max_voices - 1 - i;
+    }
+    e->free_count = cfg.max_voices;
+    fg_listener origin = {.forward = {0, 1, 0}, .up = {0, 0, 1}};
+    fg_listener_cell_init(&e->listener, &origin);
+    e->pose = origin;
+    atomic_init(&e->frames, 0);
+    *out = e;
+    return FG_OK;
+}
+
+fg_result fg_engine_create(const fg_engine_config *config, fg_engine **out)
+{
+    return fg_engine_create_with(config, NULL, 0, out);
+}
+
+void fg_engine_destroy(fg_engine *e)
+{
+    if (!e)
+        return;
+    fg_ring_deinit(&e->inbox);
+    fg_ring_deinit(&e->garbage);
+    fg_bus_set_deinit(&e->buses);
+    for (size_t i = 0; i < e->kind_count; i++) {
+        if (e->kinds[i].kind->destroy)
+            e->kinds[i].kind->destroy(e->kinds[i].storage);
+        free(e->kinds[i].pool);
+    }
+    free(e->active);
+    free(e->live);
+    free(e->free_slots);
+    free(e->voices);
+    free(e);
+}
+
+void fg_engine_get_config(const fg_engine *e, fg_engine_config *out)
+{
+    FG_REQUIRE(e && out);
+    *out = e->cfg;
+}
+
+const fg_engine_config *fg_engine_config_in_use(const fg_engine *e)
+{
+    return &e->cfg;
+}
+
+fg_result fg_engine_set_listener(fg_engine *e, const fg_listener *pose)
+{
+    if (!e || !pose)
+        return FG_ERR_NULL;
+    fg_result r = fg_listener_check(pose);
+    if (r != FG_OK)
+        return r;
+    fg_listener_cell_write(&e->listener, pose);
+    return FG_OK;
+}
+
+void fg_engine_get_listener(const fg_engine *e, fg_listener *out)
+{
+    FG_REQUIRE(e && out);
+    unsigned serial;
+    fg_listener_cell_read(&e->listener, out, &serial);
+}
+
+void fg_engine_get_report(const fg_engine *e, fg_engine_report *out)
+{
+    FG_REQUIRE(e && out);
+    fg_counters *c = (fg_counters *)&e->counters;
+#define LOAD(field) out->field = atomic_load_explicit(&c->field, memory_order_relaxed);
+    LOAD(posted)
+    LOAD(dropped_posts)
+    LOAD(adopted)
+    LOAD(finished)
+    LOAD(collected)
+    LOAD(late_events)
+    LOAD(late_samples)
+    LOAD(skipped_repeats)
+    LOAD(blocks)
+    LOAD(blocks_over_budget)
+#undef LOAD
+}
+
+uint64_t fg_engine_frames(const fg_engine *e)
+{
+    FG_REQUIRE_OR(e, 0);
+    return atomic_load_explicit(&((fg_engine *)e)->frames, memory_order_acquire);
+}
+
+double fg_engine_time_s(const fg_engine *e)
+{
+    FG_REQUIRE_OR(e, 0.0);
+    return (double)fg_engine_frames(e) / e->cfg.sample_rate_hz;
+}

@@ -1,0 +1,78 @@
+/* The audio thread's loop: adopt posted voices, render each into the
+ * buses, retire the finished, filter the buses into the output. It knows
+ * no model: every voice is played through its fg_source_ops. */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime(CLOCK_MONOTONIC) */
+#include <string.h>
+#include <time.h>
+
+#include "engine_internal.h"
+#include "fp_env_internal.h"
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
+{
+    if (!e || !out)
+        return FG_ERR_NULL;
+    for (uint32_t ch = 0; ch < e->cfg.channels; ch++)
+        if (!out[ch])
+            return FG_ERR_NULL;
+    for (uint32_t ch = 0; ch < e->cfg.channels; ch++)
+        memset(out[ch], 0, (size_t)nframes * sizeof(float));
+    if (nframes > e->cfg.max_block_frames)
+        return FG_ERR_BLOCK_SIZE;
+    if (nframes == 0)
+        return FG_OK;
+
+    double t_begin = now_s();
+    fg_fp_env env = fg_fp_env_flush_denormals();
+    uint64_t start = atomic_load_explicit(&e->frames, memory_order_relaxed);
+
+    fg_listener_cell_try_read(&e->listener, &e->pose, &e->pose_serial);
+    fg_ears ears;
+    fg_listener_ears(&e->pose, e->cfg.channels, e->cfg.ear_spacing_m, &ears);
+    fg_bus_set_begin(&e->buses, nframes);
+    fg_block_context block = {
+        .cfg = &e->cfg,
+        .start_frame = (double)start,
+        .frames = nframes,
+        .ears = &ears,
+        .position = e->pose.position,
+        .serial = e->pose_serial,
+        .buses = &e->buses,
+        .counters = &e->counters,
+    };
+
+    fg_voice *adopted;
+    for (uint32_t k = 0; k < e->cfg.max_adopt_per_block && fg_ring_pop(&e->inbox, &adopted);
+         k++) {
+        adopted->ops->adopt(adopted->state, &block);
+        e->active[e->active_count++] = adopted;
+        fg_count(&e->counters.adopted, 1);
+    }
+    for (uint32_t i = 0; i < e->active_count;) {
+        fg_voice *v = e->active[i];
+        bool stopping = atomic_load_explicit(&v->stop, memory_order_acquire);
+        if (v->ops->render(v->state, stopping, &block)) {
+            e->active[i] = e->active[--e->active_count];
+            bool pushed = fg_ring_push(&e->garbage, &v);
+            (void)pushed; /* the ring holds max_voices: never full */
+            fg_count(&e->counters.finished, 1);
+        } else {
+            i++;
+        }
+    }
+    fg_bus_set_end(&e->buses, out, nframes);
+
+    atomic_store_explicit(&e->frames, start + nframes, memory_order_release);
+    fg_count(&e->counters.blocks, 1);
+    fg_fp_env_restore(env);
+    if (now_s() - t_begin > nframes / e->cfg.sample_rate_hz)
+        fg_count(&e->counters.blocks_over_budget, 1);
+    return FG_OK;
+}

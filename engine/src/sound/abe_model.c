@@ -1,0 +1,72 @@
+/* Abe et al.'s model: a harmonic-series N-wave per source point, one point
+ * per stride segments, rendered sample by sample into the buses' float
+ * buffers. */
+#include "discharge_schedule.h"
+
+/* Source points per discharge at most, evenly along the tree. */
+#define MAX_SOURCES 512
+
+static size_t abe_stride(size_t segments)
+{
+    return (segments + MAX_SOURCES - 1) / MAX_SOURCES;
+}
+
+static void abe_wave(const fg_sound_config *p, fg_event *ev, const fg_ear_path *path, int k)
+{
+    (void)p;
+    fg_abe_wave_init(&ev->abe[k], &fg_abe_defaults, ev->mid, path->ear, 0.0, path->c_m_s);
+    ev->abe[k].arrival_s = ev->center_s[k];
+    ev->abe[k].peak_pa *= path->gain;
+}
+
+static double abe_start_s(const fg_event *ev, int k, double c_m_s)
+{
+    (void)c_m_s;
+    return ev->abe[k].arrival_s;
+}
+
+static fg_wave_status abe_add(const fg_event *ev, const fg_event_play *play, long *first,
+                              long *last)
+{
+    const double fs = play->fs_hz;
+    fg_abe_wave w = ev->abe[play->ch];
+    w.arrival_s += play->offset_s + play->origin_frame / fs;
+    int64_t a, b;
+    fg_abe_wave_span(&w, fs, &a, &b);
+    *first = (long)a;
+    *last = (long)b;
+    if (b < 0)
+        return FG_WAVE_DONE;
+    if (a >= (int64_t)play->frames)
+        return FG_WAVE_PENDING;
+    double peak = w.peak_pa;
+    for (int k = 0; k < 2; k++) {
+        if (play->share[k] == 0.0)
+            continue;
+        w.peak_pa = peak * play->share[k];
+        float *out = fg_bus_pre(play->buses, play->bus + k * FG_BUS_PLAIN, play->ch);
+        fg_abe_wave_render(&w, fs, 0, out, play->frames);
+    }
+    return FG_WAVE_SOUNDING;
+}
+
+static bool abe_render(void *voice, bool stopping, const fg_block_context *block)
+{
+    return fg_discharge_render_with(voice, stopping, block, abe_add);
+}
+
+static const fg_discharge_model abe_model = {
+    .stride = abe_stride,
+    .wave = abe_wave,
+    .start_s = abe_start_s,
+};
+
+const fg_source_ops fg_source_abe = {
+    .name = "abe",
+    .kind = &fg_discharge_kind,
+    .model = &abe_model,
+    .prepare = fg_discharge_prepare,
+    .adopt = fg_discharge_adopt,
+    .render = abe_render,
+    .release = fg_discharge_release,
+};

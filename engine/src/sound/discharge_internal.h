@@ -1,0 +1,171 @@
+/* Discharges as source models: what the WM-wave and Abe's models share.
+ *
+ * A posted discharge (fg_discharge) becomes one voice of the discharge
+ * kind: its segments turned into events sorted by arrival, in the kind's
+ * segment storage; its strokes and continuous repeats played as instances
+ * of that pattern; the window of events that can sound in each block;
+ * lateness. All of that is one implementation (discharge_*.c and
+ * discharge_schedule.h). The two models differ only in what an event is to
+ * an ear: how many segments make one source point, the wave computed from
+ * the ear's geometry, when it starts (fg_discharge_model), and how it is
+ * added to the buses (the add function their render is built with). Each
+ * model is one fg_source_ops entry (wm_model.c, abe_model.c) whose `model`
+ * points at its fg_discharge_model; fg_engine_post picks the entry by
+ * fg_discharge.model, in the one table of discharge_post.c. */
+#ifndef FULGUR_DISCHARGE_INTERNAL_H
+#define FULGUR_DISCHARGE_INTERNAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "core/arena_internal.h"
+#include "core/bus_internal.h"
+#include "core/sort_internal.h"
+#include "core/source_internal.h"
+#include "fg_rng.h"
+#include "fulgur/engine.h"
+#include "abe_voice_internal.h"
+#include "wmwave_internal.h"
+
+/* Overlapping emissions of one voice: strokes, or repeats of a continuous
+ * discharge whose sound outlasts the interval. */
+#define FG_MAX_INSTANCES 64
+
+/* One source point (a segment, or every stride-th for Abe's model),
+ * prepared at post time. Times are seconds after the emission of the
+ * instance that plays it. */
+typedef struct fg_event {
+    double mid[3];        /* segment midpoint, metres (mirrored for a ground image) */
+    double dir[3];        /* unit vector along the segment */
+    double half_len_m;    /* l */
+    double t0_s;          /* baseline half-duration with its fluctuation */
+    double emit_s;        /* when the return stroke passes the midpoint, plus turbulence */
+    double gain;          /* the ground's reflection coefficient for an image, else 1 */
+    double start_s;       /* earliest waveform start, either ear, at the post pose */
+    uint32_t segment;     /* index of the child node, for a stable order */
+    bool main;            /* on the main channel */
+    /* per-ear state for the pose with this serial */
+    unsigned serial;
+    double center_s[2];   /* arrival at the ear: emission + travel */
+    union {               /* the model's wave, written by its wave function */
+        fg_wm_shape shape[2];  /* the WM-wave (wm_model.c) */
+        fg_abe_wave abe[2];    /* Abe's wave, arrival relative to the emission (abe_model.c) */
+    };
+    uint8_t bus[2];       /* the filter bus of each ear (bus_internal.h) */
+    float shadow[2];      /* head shadow: the share sent to the shadowed twin */
+} fg_event;
+
+/* An event as seen from one ear at the current pose. */
+typedef struct fg_ear_path {
+    const double *ear;    /* the ear's position */
+    double d[3];          /* ear - midpoint */
+    double r_m;           /* |d| */
+    double gain;          /* the event's gain times the shadow-zone fade */
+    double c_m_s;
+} fg_ear_path;
+
+/* Where ear ch of an event is added in this block, for one instance. */
+typedef struct fg_event_play {
+    fg_bus_set *buses;
+    unsigned bus;         /* the plain bus; its shadowed twin is bus + FG_BUS_PLAIN */
+    unsigned ch;
+    double share[2];      /* of the plain bus and of the twin; a zero share is skipped */
+    double origin_frame;  /* the instance's emission, samples after the block's start */
+    double offset_s;      /* the instance's emission after the voice's */
+    double fs_hz;
+    double c_m_s;
+    uint32_t frames;
+} fg_event_play;
+
+/* What makes a discharge model, besides its render: fg_discharge_render_with
+ * (discharge_schedule.h) bound to the function that adds an event's ear to
+ * the buses. */
+typedef struct fg_discharge_model {
+    /* Segments per source point, for a tree of this many segments. */
+    size_t (*stride)(size_t segments);
+    /* Writes ear k's wave of ev for the ear path (the union above and its
+     * per-ear fields). [sim-thread at the post; audio-thread when the pose
+     * changes] */
+    void (*wave)(const fg_sound_config *sound, fg_event *ev, const fg_ear_path *path, int k);
+    /* When ear k's wave of ev starts sounding, seconds after the emission. */
+    double (*start_s)(const fg_event *ev, int k, double c_m_s);
+} fg_discharge_model;
+
+typedef struct fg_instance {
+    double offset_s;      /* emission time after the voice's emit time */
+    uint32_t lo, hi;      /* events before lo are done; from hi on not yet begun */
+    bool main_only;       /* dart leader: the main channel only */
+} fg_instance;
+
+/* A discharge voice's state (the kind's voice_bytes). */
+typedef struct fg_discharge_voice {
+    /* written by the sim thread before the post, read-only afterwards */
+    const fg_discharge_model *model;
+    fg_event *events;          /* sorted by start_s */
+    uint32_t *main_index;      /* indices into events of the main channel, in order */
+    uint32_t event_count, main_count;
+    size_t extent;             /* offset of events/main_index in the kind's storage */
+    fg_sound_config sound;
+    fg_propagation_config propagation;
+    double emit_time_s;        /* or FG_EMIT_NOW */
+    double post_position[3];   /* listener centre when prepared */
+    uint32_t strokes;
+    double stroke_offset_s[FG_MAX_STROKES];
+    bool continuous;
+    double repeat_min_s, repeat_max_s, duration_s;
+    fg_rng rng;                /* repeat intervals, drawn on the audio thread */
+
+    /* audio thread */
+    double emit_frame;         /* the emission on the engine clock */
+    fg_instance inst[FG_MAX_INSTANCES];
+    uint32_t inst_count;
+    double next_repeat_s;      /* continuous: next emission; < 0 once ended */
+} fg_discharge_voice;
+
+/* Scratch for preparing one tree, preallocated for the largest. */
+typedef struct fg_prep_scratch {
+    double *path_m;        /* path length from the root */
+    uint32_t *junction;    /* deepest main-channel ancestor (or self) */
+    uint8_t *main;         /* node lies on the main channel */
+    fg_sort_pair *order;   /* the arrival sort, and its scratch */
+    fg_sort_pair *order_tmp;
+} fg_prep_scratch;
+
+/* The discharge kind's storage: the events of all live voices, by
+ * extents of one arena of segment_capacity, and the prepare scratch. */
+typedef struct fg_discharge_store {
+    fg_event *events;
+    uint32_t *main_index;
+    fg_arena arena;
+    fg_prep_scratch scratch;
+} fg_discharge_store;
+
+extern const fg_source_kind fg_discharge_kind;
+/* The two entries (wm_model.c, abe_model.c). */
+extern const fg_source_ops fg_source_wm;
+extern const fg_source_ops fg_source_abe;
+
+/* discharge_post.c: the kind's functions. */
+/* How many events a checked discharge becomes under model m. */
+size_t fg_discharge_events(const fg_discharge *d, const fg_discharge_model *m);
+/* Validates a discharge's parameters other than the tree. */
+fg_result fg_discharge_check(const fg_discharge *d);
+/* A continuous discharge's repeat interval range, defaults filled in. */
+void fg_discharge_repeat_range(const fg_discharge *d, double *min_s, double *max_s);
+/* Gives the voice's events back to the storage. [sim-thread] */
+void fg_discharge_release(void *voice, void *storage);
+
+/* discharge_prepare.c: fills the voice from a checked discharge.
+ * [sim-thread] Errors: FG_ERR_POOL_FULL no segment space now. */
+fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void *desc,
+                               const fg_post_context *post);
+
+/* discharge_schedule.c: takes the voice up. [audio-thread] */
+void fg_discharge_adopt(void *voice, const fg_block_context *block);
+
+/* discharge_event.c: event ev of voice v as heard by ear k of ears, into
+ * ev's slot k, reading the speed of sound and the bus set's bands. */
+void fg_event_geometry(const fg_discharge_voice *v, fg_event *ev, const fg_ears *ears, int k,
+                       double c_m_s, const fg_bus_set *buses);
+
+#endif

@@ -1,0 +1,71 @@
+/* Playing a discharge voice on the audio thread: adoption, and each
+ * block's start: the motion look-ahead, a stop, continuous repeats. The
+ * instances themselves are played by discharge_schedule.h. */
+#include <math.h>
+
+#include "discharge_schedule.h"
+
+void fg_discharge_adopt(void *voice, const fg_block_context *block)
+{
+    fg_discharge_voice *v = voice;
+    v->emit_frame = v->emit_time_s == FG_EMIT_NOW ? block->start_frame
+                                                  : v->emit_time_s * block->cfg->sample_rate_hz;
+    v->inst_count = 0;
+    for (uint32_t k = 0; k < v->strokes; k++)
+        v->inst[v->inst_count++] = (fg_instance){v->stroke_offset_s[k], 0, 0, k > 0};
+    v->next_repeat_s =
+        v->continuous ? fg_rng_range(&v->rng, v->repeat_min_s, v->repeat_max_s) : -1.0;
+}
+
+static double look_ahead_s(const fg_engine_config *cfg, const fg_discharge_voice *v,
+                           const double position[3])
+{
+    double d2 = 0;
+    for (int k = 0; k < 3; k++)
+        d2 += (position[k] - v->post_position[k]) * (position[k] - v->post_position[k]);
+    double ears = cfg->channels == 2 ? cfg->ear_spacing_m : 0.0;
+    /* 1 % for the growth of T with distance, two samples for rounding */
+    double m = 1.01 * (sqrt(d2) + ears) / cfg->speed_of_sound_m_s + 2.0 / cfg->sample_rate_hz;
+    return m < cfg->max_lookahead_s ? m : cfg->max_lookahead_s;
+}
+
+static void spawn_repeats(fg_discharge_voice *v, const fg_discharge_block *vb)
+{
+    double first_start = v->events[0].start_s;
+    while (v->next_repeat_s >= 0 && v->next_repeat_s + first_start - vb->margin_s <= vb->end_s) {
+        if (v->duration_s > 0 && v->next_repeat_s >= v->duration_s) {
+            v->next_repeat_s = -1.0;
+            break;
+        }
+        if (v->inst_count < FG_MAX_INSTANCES)
+            v->inst[v->inst_count++] = (fg_instance){v->next_repeat_s, 0, 0, false};
+        else
+            fg_count(&vb->ctx->counters->skipped_repeats, 1);
+        v->next_repeat_s += fg_rng_range(&v->rng, v->repeat_min_s, v->repeat_max_s);
+    }
+}
+
+void fg_discharge_begin_block(fg_discharge_voice *v, bool stopping, const fg_block_context *ctx,
+                              fg_discharge_block *vb)
+{
+    const double fs = ctx->cfg->sample_rate_hz;
+    *vb = (fg_discharge_block){
+        .ctx = ctx,
+        .origin_frame = v->emit_frame - ctx->start_frame,
+        .end_s = (ctx->start_frame + ctx->frames - v->emit_frame) / fs,
+        .margin_s = look_ahead_s(ctx->cfg, v, ctx->position),
+    };
+    if (stopping) {
+        /* emissions that have not begun by this block's start never will */
+        double start_s = vb->end_s - ctx->frames / fs;
+        for (uint32_t i = 0; i < v->inst_count;) {
+            if (v->inst[i].offset_s > start_s)
+                v->inst[i] = v->inst[--v->inst_count];
+            else
+                i++;
+        }
+        v->next_repeat_s = -1.0;
+    }
+    if (v->continuous)
+        spawn_repeats(v, vb);
+}

@@ -1,0 +1,128 @@
+/* Playing a discharge voice's instances (strokes, repeats) in one block:
+ * the window of events that can sound, lateness, and each event added to
+ * the buses by the model's add function.
+ *
+ * Events are sorted by their earliest start at the pose of the post. A
+ * moving listener shifts any start by at most (displacement + ear spacing)
+ * / c, so an event joins an instance's window once its post-time start,
+ * less that look-ahead, falls before the block's end. Events leave the
+ * window in order once their waveform has ended for every ear.
+ *
+ * One implementation for both models, written once here and instantiated
+ * by each model's render with its own add function (wm_model.c,
+ * abe_model.c): the add is then a direct call the compiler can inline in
+ * the per-event loop, the hottest of the audio thread. [audio-thread] */
+#ifndef FULGUR_DISCHARGE_SCHEDULE_H
+#define FULGUR_DISCHARGE_SCHEDULE_H
+
+#include "discharge_internal.h"
+
+/* Adds ear play->ch of ev to the buses (fg_discharge_model's add). */
+typedef fg_wave_status (*fg_discharge_add_fn)(const fg_event *ev, const fg_event_play *play,
+                                              long *first, long *last);
+
+/* One block of one voice, as its instances see it. */
+typedef struct fg_discharge_block {
+    const fg_block_context *ctx;
+    double origin_frame;   /* voice emission relative to the block's first sample */
+    double end_s;          /* block end, seconds after the voice's emission */
+    double margin_s;       /* the motion look-ahead */
+} fg_discharge_block;
+
+/* discharge_schedule.c: the block's start for the voice: the look-ahead,
+ * a stop (emissions not yet begun are dropped), continuous repeats. */
+void fg_discharge_begin_block(fg_discharge_voice *v, bool stopping, const fg_block_context *ctx,
+                              fg_discharge_block *vb);
+
+static inline fg_event *fg_instance_event(fg_discharge_voice *v, const fg_instance *in,
+                                          uint32_t k)
+{
+    return &v->events[in->main_only ? v->main_index[k] : k];
+}
+
+/* Adds ear ch of event ev to the buses through play (the instance's),
+ * splitting it with the head-shadowed twin bus. Returns its status and its
+ * first and last sample relative to the block. */
+static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, fg_event_play *play,
+                                                    unsigned ch, fg_discharge_add_fn add,
+                                                    long *first, long *last)
+{
+    double shadow = ev->shadow[ch];
+    play->bus = ev->bus[ch];
+    play->ch = ch;
+    /* shares below 2 % go whole to one side */
+    play->share[0] = shadow < 0.02 ? 1.0 : shadow > 0.98 ? 0.0 : 1.0 - shadow;
+    play->share[1] = shadow < 0.02 ? 0.0 : shadow > 0.98 ? 1.0 : shadow;
+    return add(ev, play, first, last);
+}
+
+/* Renders one instance; returns true once all its events are done. */
+static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instance *in,
+                                                const fg_discharge_block *vb,
+                                                fg_discharge_add_fn add)
+{
+    const fg_block_context *ctx = vb->ctx;
+    const uint32_t n = in->main_only ? v->main_count : v->event_count;
+    const uint32_t first_new = in->hi;
+    while (in->hi < n &&
+           fg_instance_event(v, in, in->hi)->start_s + in->offset_s - vb->margin_s <= vb->end_s)
+        in->hi++;
+
+    fg_event_play play = {
+        .buses = ctx->buses,
+        .origin_frame = vb->origin_frame,
+        .offset_s = in->offset_s,
+        .fs_hz = ctx->cfg->sample_rate_hz,
+        .c_m_s = ctx->cfg->speed_of_sound_m_s,
+        .frames = ctx->frames,
+    };
+    uint64_t late = 0, lost = 0;
+    for (uint32_t k = in->lo; k < in->hi; k++) {
+        fg_event *ev = fg_instance_event(v, in, k);
+        if (ev->serial != ctx->serial) {
+            for (unsigned ch = 0; ch < ctx->ears->count; ch++)
+                fg_event_geometry(v, ev, ctx->ears, (int)ch, ctx->cfg->speed_of_sound_m_s,
+                                  ctx->buses);
+            ev->serial = ctx->serial;
+        }
+        bool done = true;
+        long lost_here = 0;
+        for (unsigned ch = 0; ch < ctx->ears->count; ch++) {
+            long a, b;
+            if (fg_discharge_add_event(ev, &play, ch, add, &a, &b) != FG_WAVE_DONE)
+                done = false;
+            long missed = k >= first_new && a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
+            if (missed > lost_here)
+                lost_here = missed;
+        }
+        if (lost_here > 0) {
+            late++;
+            lost += (uint64_t)lost_here;
+        }
+        if (done && k == in->lo)
+            in->lo++;
+    }
+    if (late) {
+        fg_count(&ctx->counters->late_events, late);
+        fg_count(&ctx->counters->late_samples, lost);
+    }
+    return in->lo == n;
+}
+
+/* fg_source_ops.render of a discharge model whose events add. */
+static inline bool fg_discharge_render_with(void *voice, bool stopping,
+                                            const fg_block_context *ctx, fg_discharge_add_fn add)
+{
+    fg_discharge_voice *v = voice;
+    fg_discharge_block vb;
+    fg_discharge_begin_block(v, stopping, ctx, &vb);
+    for (uint32_t i = 0; i < v->inst_count;) {
+        if (fg_discharge_render_instance(v, &v->inst[i], &vb, add))
+            v->inst[i] = v->inst[--v->inst_count];
+        else
+            i++;
+    }
+    return v->inst_count == 0 && v->next_repeat_s < 0;
+}
+
+#endif

@@ -1,0 +1,219 @@
+/* The WM-wave (Wright & Medendorp 1968; Matsuyama eq. 5).
+ *
+ * A point N-wave of peak ps and half-duration T, averaged along a segment of
+ * half-length l whose ends arrive s*l/c apart, in tau = c (t - t_a) / l:
+ *   p(tau) = (1/2s) int_{-s}^{s} N(tau - u) du,  N(x) = -(ps/psi) x on |x| < psi.
+ * Eq. 5 is this box average written out; with B = ps/(4 psi) its s >= psi
+ * middle piece is 0 (Glassner's printed -4 B tau there is a typo).
+ *
+ * p is odd, so its integral P is even. For x = |tau| >= 0:
+ *   x >= psi + s:            P = 0
+ *   |psi - s| <= x < psi + s: P = (B/3s) (x - s - psi)^2 (x - s + 2 psi)
+ *   x < psi - s (s < psi):    P = (4Bs/3)(3 psi - 2s) + 2B ((psi - s)^2 - x^2)
+ *   x < s - psi (s >= psi):   P = 4 B psi^3 / (3s)
+ * s -> 0 needs no special case: the cubic shell is then empty. */
+#include <limits.h>
+#include <math.h>
+#include <string.h>
+
+#include "wmwave_internal.h"
+
+fg_wm_shape fg_wm_shape_at(const fg_sound_config *p, double t0_s, double r_m, double s, double l_m,
+                     double c_m_s, double *t_s)
+{
+    double r = r_m > p->r0_m ? r_m : p->r0_m;
+    double stretch = sqrt(1.0 + p->sigma0 * log(r / p->r0_m));
+    double t = t0_s * stretch;
+    double ps = p->r0_m * p->ps0_pa / (r * stretch);
+    double psi = c_m_s * t / l_m;
+    if (t_s)
+        *t_s = t;
+    return (fg_wm_shape){.b = ps / (4.0 * psi), .s = s, .psi = psi};
+}
+
+double fg_wm_pressure(const fg_wm_shape *w, double tau)
+{
+    double s = w->s, psi = w->psi, b = w->b;
+    double x = fabs(tau);
+    double sign = tau < 0 ? -1.0 : 1.0;
+    if (x >= psi + s)
+        return 0.0;
+    if (x > fabs(psi - s))
+        return sign * (b / s) * ((x - s) * (x - s) - psi * psi);
+    if (s < psi)
+        return -4.0 * b * tau;
+    return 0.0;
+}
+
+double fg_wm_integral(const fg_wm_shape *w, double tau)
+{
+    double s = w->s, psi = w->psi, b = w->b;
+    double x = fabs(tau);
+    if (x >= psi + s)
+        return 0.0;
+    if (x >= fabs(psi - s)) {
+        double u = x - s - psi;
+        return (b / (3.0 * s)) * u * u * (x - s + 2.0 * psi);
+    }
+    if (s < psi) {
+        double m = psi - s;
+        return (4.0 * b * s / 3.0) * (3.0 * psi - 2.0 * s) + 2.0 * b * (m * m - x * x);
+    }
+    return 4.0 * b * psi * psi * psi / (3.0 * s);
+}
+
+/* The sample holding position x: floor(x + 1/2), without a libm call on
+ * targets where floor is not an instruction. */
+static long sample_at(double x)
+{
+    double y = x + 0.5;
+    long m = (long)y;
+    return m - ((double)m > y);
+}
+
+void fg_wm_event_span(const fg_wm_event *e, long *first, long *last)
+{
+    double half = (e->shape.psi + e->shape.s) * e->width;
+    *first = sample_at(e->center - half);
+    *last = sample_at(e->center + half);
+}
+
+/* Which quadratic piece of p holds tau: 0 before the wave, 1 the rising
+ * shell, 2 the middle, 3 the falling shell, 4 after. */
+static int piece(const fg_wm_shape *w, double tau)
+{
+    double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    return tau <= -outer ? 0 : tau <= -inner ? 1 : tau <= inner ? 2 : tau <= outer ? 3 : 4;
+}
+
+/* The average over sample k, accurate to rounding of the peak. A difference
+ * of P at the two edges loses digits when the wave spans many samples (P is
+ * ~ psi times the peak, the difference ~ 1/width of it), and the block
+ * accumulator extrapolates those errors quadratically across the block. So
+ * inside one piece the average of the quadratic is taken directly:
+ * p(mid) + p'' h^2 / 24, h = 1/width; across a breakpoint, the P difference
+ * (that sample's error is not extrapolated: the samples after it are). */
+static double sample_average(const fg_wm_event *e, long k)
+{
+    const fg_wm_shape *w = &e->shape;
+    double a = ((double)k - 0.5 - e->center) / e->width;
+    double z = ((double)k + 0.5 - e->center) / e->width;
+    int pa = piece(w, a);
+    if (pa != piece(w, z))
+        return e->width * (fg_wm_integral(w, z) - fg_wm_integral(w, a));
+    if (pa == 0 || pa == 4)
+        return 0.0;
+    double h = z - a;
+    double curvature = pa == 1 ? -2.0 * w->b / w->s : pa == 3 ? 2.0 * w->b / w->s : 0.0;
+    return fg_wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
+}
+
+/* Samples lo..hi (lo >= -3) evaluated exactly: state for k < 0, third
+ * differences for k >= lo + 3 (earlier ones in the range lie on one
+ * quadratic piece and have none). */
+static void add_range(fg_accum *b, const fg_wm_event *e, long lo, long hi)
+{
+    /* a merged range is at most the state (3) plus 4 breakpoints (7 each) */
+    enum { MAX_RANGE = 32 };
+    double y[MAX_RANGE];
+    for (long k = lo; k <= hi; k++) {
+        y[k - lo] = sample_average(e, k);
+        if (k < 0)
+            b->state[-1 - k] += y[k - lo];
+        else if (k >= lo + 3)
+            b->d3[k] += y[k - lo] - 3.0 * y[k - lo - 1] + 3.0 * y[k - lo - 2] - y[k - lo - 3];
+    }
+}
+
+/* Third differences of one breakpoint at sample position x where the
+ * pressure gains a0 + a1 (x' - x) + a2 (x' - x)^2 (per sample units): its
+ * running integral G(u) = a0 u + a1 u^2/2 + a2 u^3/3 from x, sampled at
+ * sample edges, has a fourth difference that vanishes past four samples. */
+static void add_breakpoint(fg_accum *b, double x, double a0, double a1, double a2)
+{
+    long m = sample_at(x);
+    long n = (long)b->n;
+    if (m > n - 1 || m + 3 < 0)
+        return;
+    double f = (double)m + 0.5 - x, g[4];
+    for (int j = 0; j < 4; j++) {
+        double u = j + f;
+        g[j] = u * (a0 + u * (0.5 * a1 + u * a2 / 3.0));
+    }
+    double taps[4] = {g[0], g[1] - 4.0 * g[0], g[2] - 4.0 * g[1] + 6.0 * g[0],
+                      g[3] - 4.0 * g[2] + 6.0 * g[1] - 4.0 * g[0]};
+    for (long q = m < 0 ? -m : 0; q < 4 && m + q < n; q++)
+        b->d3[m + q] += taps[q];
+}
+
+/* The four breakpoints in closed form, when they lie at least a sample
+ * apart in pairs (s w >= 2): jumps of p' and p'' from eq. 5, per tau,
+ * scaled to samples. Nearer pairs (broadside, s -> 0) would cancel large
+ * terms, so those waves take the exact evaluation around each breakpoint. */
+#define CLOSED_FORM_MIN_SW 2.0
+
+static void add_breakpoints(fg_accum *b, const fg_wm_event *e)
+{
+    const fg_wm_shape *w = &e->shape;
+    double s = w->s, psi = w->psi, k1 = 2.0 * w->b * psi / s, k2 = 2.0 * w->b / s;
+    double inner = fabs(psi - s), outer = psi + s;
+    /* (tau, jump of p', jump of p'') in ascending tau */
+    double jumps[4][3] = {
+        {-outer, k1, -k2},
+        {-inner, s < psi ? -k1 : k1, k2},
+        {inner, s < psi ? k1 : -k1, k2},
+        {outer, -k1, -k2},
+    };
+    double wd = e->width;
+    for (int i = 0; i < 4; i++)
+        add_breakpoint(b, e->center + jumps[i][0] * wd, 0.0, jumps[i][1] / wd,
+                       0.5 * jumps[i][2] / (wd * wd));
+}
+
+fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
+{
+    const fg_wm_shape *w = &e->shape;
+    long first, last;
+    fg_wm_event_span(e, &first, &last);
+    long n = (long)b->n;
+    if (last < -3)
+        return FG_WAVE_DONE;
+    if (first >= n)
+        return FG_WAVE_PENDING;
+    b->touched = true;
+
+    if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
+        if (first < 0)
+            add_range(b, e, -3, -1);
+        add_breakpoints(b, e);
+        return FG_WAVE_SOUNDING;
+    }
+    /* Breakpoints, ascending; each disturbs the samples m-3..m+3 around the
+     * sample m that holds it. */
+    double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    double taus[4] = {-outer, -inner, inner, outer};
+    long lo = LONG_MIN, hi = LONG_MIN;
+    if (first < 0) {
+        lo = -3;
+        hi = -1;
+    }
+    for (int i = 0; i < 4; i++) {
+        long m = sample_at(e->center + taus[i] * e->width);
+        long a = m - 3 < -3 ? -3 : m - 3;
+        long z = m + 3 > n - 1 ? n - 1 : m + 3;
+        if (a > z)
+            continue;
+        if (hi != LONG_MIN && a <= hi + 1) {
+            if (z > hi)
+                hi = z;
+            continue;
+        }
+        if (hi != LONG_MIN)
+            add_range(b, e, lo, hi);
+        lo = a;
+        hi = z;
+    }
+    if (hi != LONG_MIN)
+        add_range(b, e, lo, hi);
+    return FG_WAVE_SOUNDING;
+}

@@ -1,0 +1,51 @@
+/* The WM-wave of one segment (Matsuyama eq. 5), its closed-form integral,
+ * exact sample averages, and how it enters a difference-domain
+ * accumulator (core/accum_internal.h). */
+#ifndef FULGUR_WMWAVE_INTERNAL_H
+#define FULGUR_WMWAVE_INTERNAL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "core/accum_internal.h"
+#include "fulgur/sound.h"
+
+/* The shape in the dimensionless time tau = c (t - t_arrival) / l. */
+typedef struct fg_wm_shape {
+    double b;    /* B, pascals: broadside peak is 4 B psi = ps */
+    double s;    /* sin(theta), 0 = broadside, 1 = end-on */
+    double psi;  /* c T / l */
+} fg_wm_shape;
+
+/* One segment as heard by one ear: its shape, where tau = 0 falls and how
+ * many samples one unit of tau lasts. */
+typedef struct fg_wm_event {
+    fg_wm_shape shape;
+    double center;  /* sample position of tau = 0 (sample n covers [n-1/2, n+1/2)) */
+    double width;   /* samples per unit of tau: fs * l / c */
+} fg_wm_event;
+
+/* Shape of a segment of half-length l_m at distance r_m (clamped to r0)
+ * with s = sin(theta), for N-wave parameters p and a baseline T0 t0_s. Fills
+ * *t_s with the stretched half-duration T. */
+fg_wm_shape fg_wm_shape_at(const fg_sound_config *p, double t0_s, double r_m, double s, double l_m,
+                     double c_m_s, double *t_s);
+
+/* The continuous pressure p(tau), pascals (eq. 5, both cases). */
+double fg_wm_pressure(const fg_wm_shape *w, double tau);
+
+/* Its running integral P(tau) = int_{-inf}^{tau} p, pascal * tau units.
+ * P is even in tau and vanishes outside [-(psi+s), psi+s]. */
+double fg_wm_integral(const fg_wm_shape *w, double tau);
+
+/* First and last sample the event touches. */
+void fg_wm_event_span(const fg_wm_event *e, long *first, long *last);
+
+
+/* Adds event e (positions relative to the block start) to the block's
+ * accumulator. The cost is a few closed-form evaluations per breakpoint in
+ * the block plus three for the state, whatever the waveform's length. */
+fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e);
+
+
+#endif

@@ -1,0 +1,125 @@
+/* fulgur analyze: a WAV's level figures, and its waveform envelope and
+ * spectrogram as gnuplot-ready text (scripts/plot.gp draws them). */
+#include <math.h>
+#include <sndfile.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "common/commands.h"
+#include "common/options.h"
+#include "common/temp_file.h"
+#include "envelope.h"
+#include "spectrogram.h"
+
+#define ENVELOPE_POINTS 2000
+#define P_REF_PA 20e-6
+
+static const char about[] = "Prints the peak and RMS pressure of a WAV.\n";
+
+static const char notes[] =
+    "Exit: 0 done, 1 runtime error, 2 bad arguments or unreadable input.\n";
+
+typedef struct audio {
+    float *samples; /* interleaved */
+    size_t frames;
+    int channels;
+    double rate_hz;
+} audio;
+
+static int read_wav(const char *path, audio *a)
+{
+    SF_INFO info = {0};
+    SNDFILE *f = sf_open(path, SFM_READ, &info);
+    if (!f) {
+        fprintf(stderr, "fulgur: %s: %s\n", path, sf_strerror(NULL));
+        return -1;
+    }
+    a->frames = (size_t)info.frames;
+    a->channels = info.channels;
+    a->rate_hz = info.samplerate;
+    a->samples = malloc((a->frames ? a->frames : 1) * (size_t)a->channels * sizeof(float));
+    int ok = a->samples && sf_readf_float(f, a->samples, info.frames) == info.frames;
+    sf_close(f);
+    if (!ok) {
+        fprintf(stderr, "fulgur: %s: cannot read %zu frames\n", path, a->frames);
+        free(a->samples);
+        return -1;
+    }
+    return 0;
+}
+
+typedef int (*writer)(FILE *out, const audio *a);
+
+static int write_envelope(FILE *out, const audio *a)
+{
+    return envelope_write(out, a->samples, a->frames, a->channels, a->rate_hz, ENVELOPE_POINTS);
+}
+
+static int write_spectrogram(FILE *out, const audio *a)
+{
+    return spectrogram_write(out, a->samples, a->frames, a->channels, 0, a->rate_hz);
+}
+
+static int write_output(const char *path, writer write, const audio *a)
+{
+    char err[512];
+    temp_file t;
+    if (temp_file_open(&t, path, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return -1;
+    }
+    FILE *out = temp_file_stream(&t);
+    if (!out || write(out, a) != 0) {
+        fprintf(stderr, "fulgur: %s: cannot write\n", path);
+        temp_file_abort(&t);
+        return -1;
+    }
+    if (temp_file_commit(&t, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+static void print_levels(const char *path, const audio *a)
+{
+    double peak = 0, sum = 0;
+    size_t count = a->frames * (size_t)a->channels;
+    for (size_t i = 0; i < count; i++) {
+        peak = fmax(peak, fabs(a->samples[i]));
+        sum += (double)a->samples[i] * a->samples[i];
+    }
+    double rms = count ? sqrt(sum / (double)count) : 0;
+    printf("%s: %d ch, %.0f Hz, %.3f s, peak %.6g Pa (%.1f dB SPL), rms %.6g Pa\n", path,
+           a->channels, a->rate_hz, (double)a->frames / a->rate_hz, peak,
+           20 * log10(fmax(peak, 1e-12) / P_REF_PA), rms);
+}
+
+int analyze_main(int argc, char **argv)
+{
+    const char *in = NULL, *wave = NULL, *spec = NULL;
+    const option table[] = {
+        {"--waveform", OPTION_TEXT, &wave, "W.dat",
+         .help = "write a min/max envelope: time_s, then min and max in Pa per\n"
+                 "channel"},
+        {"--spectrogram", OPTION_TEXT, &spec, "S.dat",
+         .help = "write \"time_s freq_hz level_db\" rows (dB re 20 uPa, 1/24-octave\n"
+                 "bands, channel 0), a blank line after each time slice"},
+        {0},
+    };
+    const command_line cl = {"fulgur analyze", "IN.wav", 1, 1, about, notes, table};
+    size_t operands;
+    options_result parsed = options_parse(&cl, argc, argv, &in, &operands);
+    if (parsed != OPTIONS_OK)
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
+    audio a;
+    if (read_wav(in, &a) != 0)
+        return CLI_USAGE;
+    print_levels(in, &a);
+    int rc = CLI_OK;
+    if ((wave && write_output(wave, write_envelope, &a) != 0) ||
+        (spec && write_output(spec, write_spectrogram, &a) != 0))
+        rc = CLI_RUNTIME;
+    free(a.samples);
+    return rc;
+}

@@ -1,0 +1,46 @@
+/* fulgur: the sound of electric discharges. Dispatches to a subcommand. */
+#include <stdio.h>
+#include <string.h>
+
+#include "common/commands.h"
+
+static const struct {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} commands[] = {
+    {"render", render_main, "render a scene to a 32-bit float WAV through the real-time engine"},
+    {"run", run_main, "run a scene in real time, as a VR application would, and report timing as JSON"},
+#ifdef FULGUR_HAVE_GPU
+    {"view", view_main, "show and sound discharges in a window (or headless): place charges, trigger"},
+#endif
+    {"analyze", analyze_main, "write a WAV's waveform envelope and spectrogram for gnuplot"},
+    {"aerotex", aerotex_main, "compute an aerodynamic sound texture of a shape by CFD (or show one)"},
+};
+
+#define COMMAND_COUNT (sizeof commands / sizeof commands[0])
+
+static void usage(FILE *to)
+{
+    fprintf(to, "usage: fulgur COMMAND [ARGS...]   (fulgur COMMAND --help for each)\n\n");
+    for (size_t i = 0; i < COMMAND_COUNT; i++)
+        fprintf(to, "  %-8s %s\n", commands[i].name, commands[i].summary);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return CLI_USAGE;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+        usage(stdout);
+        return CLI_OK;
+    }
+    for (size_t i = 0; i < COMMAND_COUNT; i++)
+        if (strcmp(argv[1], commands[i].name) == 0)
+            return commands[i].run(argc - 1, argv + 1);
+    fprintf(stderr, "fulgur: unknown command \"%s\"\n", argv[1]);
+    usage(stderr);
+    return CLI_USAGE;
+}

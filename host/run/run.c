@@ -1,0 +1,180 @@
+/* fulgur run: the set-up, three threads, the report. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "common/commands.h"
+#include "run_gate.h"
+
+/* Allocates what the threads use; the engine last. */
+static int set_up(run_ctx *run, char *err, size_t err_size)
+{
+    const scene *s = run->s;
+    size_t n = s->discharge_count ? s->discharge_count : 1;
+    run->paced = run->opt.audio.kind == AUDIO_DRIVER_NULL;
+    run->block_frames = run->opt.block_frames ? run->opt.block_frames : s->block_frames;
+    run->rate_hz = run->opt.rate_hz ? run->opt.rate_hz : s->sample_rate_hz;
+    double seconds = run->opt.seconds ? run->opt.seconds : s->duration_s;
+    run->until_done = seconds == 0;
+    run->limit_frames = (uint64_t)llround((seconds ? seconds : SCENE_MAX_DURATION_S) * run->rate_hz);
+    run->order = scene_post_order(s);
+    run->post_frame = calloc(n, sizeof *run->post_frame);
+    run->post_ns = calloc(n, sizeof *run->post_ns);
+    run->post_event_s = calloc(n, sizeof *run->post_event_s);
+    run->adopt_frame = calloc(n, sizeof *run->adopt_frame);
+    run->adopt_ns = calloc(n, sizeof *run->adopt_ns);
+    for (uint32_t ch = 0; ch < s->channels; ch++)
+        run->planes[ch] = calloc(run->block_frames, sizeof(float));
+    /* callback and post call to 1 us up to 50 ms; jitter to 10 us up to 1 s */
+    int hists = run_hist_init(&run->callback, 1e-6, 50000) |
+                run_hist_init(&run->post_call, 1e-6, 50000) |
+                run_hist_init(&run->jitter, 1e-5, 100000);
+    if (!run->order || !run->post_frame || !run->post_ns || !run->post_event_s ||
+        !run->adopt_frame || !run->adopt_ns || !run->planes[0] ||
+        (s->channels == 2 && !run->planes[1]) || hists) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    if (run_gate_init(&run->gate) != 0) {
+        snprintf(err, err_size, "cannot create the lock-step gate");
+        return -1;
+    }
+    fg_engine_config cfg;
+    scene_engine_config(s, &cfg);
+    cfg.sample_rate_hz = run->rate_hz;
+    cfg.max_block_frames = run->block_frames;
+    cfg.max_voices = run->opt.voices;
+    fg_result r = fg_engine_create(&cfg, &run->engine);
+    if (r != FG_OK) {
+        snprintf(err, err_size, "engine: %s", fg_result_str(r));
+        return -1;
+    }
+    return 0;
+}
+
+static void tear_down(run_ctx *run)
+{
+    fg_engine_destroy(run->engine);
+    run_gate_deinit(&run->gate);
+    free(run->order);
+    free(run->post_frame);
+    free(run->post_ns);
+    free(run->post_event_s);
+    free(run->adopt_frame);
+    free(run->adopt_ns);
+    free(run->planes[0]);
+    free(run->planes[1]);
+    run_hist_deinit(&run->callback);
+    run_hist_deinit(&run->post_call);
+    run_hist_deinit(&run->jitter);
+}
+
+/* Starts the three threads and joins them. Returns -1 with a message when
+ * one could not start (the others are stopped and joined). */
+static int run_threads(run_ctx *run, char *err, size_t err_size)
+{
+    void *(*const bodies[3])(void *) = {run_frame_thread, run_sim_thread, run_audio_thread};
+    pthread_t threads[3];
+    int started = 0;
+    run->start_ns = monotonic_now_ns();
+    while (started < 3 && pthread_create(&threads[started], NULL, bodies[started], run) == 0)
+        started++;
+    if (started < 3)
+        run_stop(run);
+    for (int i = 0; i < started; i++)
+        pthread_join(threads[i], NULL);
+    if (started < 3) {
+        snprintf(err, err_size, "cannot start the threads");
+        return -1;
+    }
+    return 0;
+}
+
+static int write_report(const run_ctx *run, double wall_s, char *err, size_t err_size)
+{
+    char *text = run_report_json(run, wall_s);
+    if (!text) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    FILE *to = run->opt.audio.kind == AUDIO_DRIVER_RAW ? stderr : stdout;
+    if (run->opt.report_path && !(to = fopen(run->opt.report_path, "w"))) {
+        snprintf(err, err_size, "%s: cannot create", run->opt.report_path);
+        free(text);
+        return -1;
+    }
+    int bad = fprintf(to, "%s\n", text) < 0;
+    bad |= run->opt.report_path ? fclose(to) != 0 : fflush(to) != 0;
+    free(text);
+    if (bad)
+        snprintf(err, err_size, "writing the report failed");
+    return bad ? -1 : 0;
+}
+
+static int run_scene(run_ctx *run)
+{
+    char err[512] = "";
+    int ok = set_up(run, err, sizeof err) == 0 &&
+             audio_driver_start(&run->driver, &run->opt.audio, run->rate_hz, run->s->channels,
+                                run->block_frames, (float)run->s->gain, err, sizeof err) == 0;
+    if (!ok) {
+        tear_down(run);
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_RUNTIME;
+    }
+    uint64_t t0 = monotonic_now_ns();
+    ok = run_threads(run, err, sizeof err) == 0;
+    double wall_s = (double)(monotonic_now_ns() - t0) * 1e-9;
+    int fail_rc = CLI_RUNTIME;
+    if (ok && run->sim_error[0]) {
+        snprintf(err, sizeof err, "%s", run->sim_error);
+        fail_rc = run->sim_error_in_scene ? CLI_USAGE : CLI_RUNTIME;
+        ok = 0;
+    } else if (ok && run->render_result != FG_OK) {
+        snprintf(err, sizeof err, "render at frame %llu: %s",
+                 (unsigned long long)run->frames_out, fg_result_str(run->render_result));
+        ok = 0;
+    } else if (ok && run->audio_error[0]) {
+        snprintf(err, sizeof err, "%s", run->audio_error);
+        ok = 0;
+    }
+    char stop_err[512];
+    if (audio_driver_stop(&run->driver, ok, stop_err, sizeof stop_err) != 0 && ok) {
+        snprintf(err, sizeof err, "%s", stop_err);
+        ok = 0;
+    }
+    if (ok)
+        ok = write_report(run, wall_s, err, sizeof err) == 0;
+    tear_down(run);
+    if (!ok) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return fail_rc;
+    }
+    return CLI_OK;
+}
+
+int run_main(int argc, char **argv)
+{
+    run_options opt;
+    options_result parsed = run_parse_options(argc, argv, &opt);
+    if (parsed != OPTIONS_OK)
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
+    char err[512];
+    scene s;
+    if (scene_load(opt.scene_path, &s, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_USAGE;
+    }
+    int rc = CLI_RUNTIME;
+    run_ctx *run = calloc(1, sizeof *run); /* large: the measurements' state */
+    if (run) {
+        run->opt = opt;
+        run->s = &s;
+        rc = run_scene(run);
+    } else {
+        fputs("fulgur: out of memory\n", stderr);
+    }
+    free(run);
+    scene_deinit(&s);
+    return rc;
+}

@@ -1,0 +1,121 @@
+/* A scene file: what to render, parsed from JSON (docs/scene-format.md).
+ *
+ * Two steps. scene_parse checks the whole file and fills a plain struct:
+ * explicit trees are read and checked with fg_tree_check, generator objects
+ * are kept as their JSON (only their type is checked). scene_build then runs
+ * each generator (scene/generator.h) to give every discharge its tree.
+ * Errors name the JSON path: "discharges[2].tree.nodes[7]: parent 9 is not
+ * before node 7". A failed call leaves nothing allocated. */
+#ifndef HOST_SCENE_SCENE_H
+#define HOST_SCENE_SCENE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cjson/cJSON.h>
+
+#include "fulgur/fulgur.h"
+
+/* Longest scene, and the default length's cap. */
+#define SCENE_MAX_DURATION_S 3600.0
+
+typedef struct scene_pose {
+    double time_s;
+    double position_m[3];
+    double forward[3];
+    double up[3];
+} scene_pose;
+
+/* One discharge of the scene: what is posted, and where it came from. */
+typedef struct scene_discharge {
+    /* What fg_engine_post takes, as it takes it: the tree (owned by the
+     * scene: explicit, or built by scene_build; the offset applied; NULL
+     * until built), the preset's sound with the overrides, the emit time on
+     * the engine clock, strokes (0: drawn by the engine), the continuous
+     * repeat (duration 0: until the scene ends), the seed, the propagation
+     * (the scene's, with this discharge's keys over it) and the model. */
+    fg_discharge post;
+    fg_preset preset;
+    double offset_m[3];        /* added to every node */
+    const cJSON *generator;    /* the generator object inside scene.json, or NULL */
+} scene_discharge;
+
+/* What the picture looks through (the "camera" block). */
+typedef struct scene_camera {
+    bool given;                /* false: none in the file (see scene_camera_framing) */
+    double eye_m[3], target_m[3];
+    double up[3];              /* default +z */
+    double fov_y_deg;          /* vertical field of view, default 45 */
+} scene_camera;
+
+typedef struct scene {
+    double sample_rate_hz;
+    uint32_t channels;
+    uint32_t block_frames;
+    double duration_s;         /* 0: until every discharge has finished sounding */
+    uint64_t seed;
+    double gain;
+    double speed_of_sound_m_s;
+    double temperature_c;      /* the air, for ISO 9613-1 absorption */
+    double humidity_pct;
+    double pressure_kpa;
+    fg_propagation_config propagation; /* every discharge's default */
+    scene_pose *poses;         /* ascending times; one pose for a fixed listener */
+    size_t pose_count;
+    scene_discharge *discharges;
+    size_t discharge_count;
+    scene_camera camera;
+    cJSON *json;               /* the parsed document the generator specs live in */
+} scene;
+
+/* Parses text (size bytes, need not be NUL-terminated) into *out. Returns 0,
+ * or -1 with the message in err; *out is then zeroed. */
+int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err_size);
+
+/* Reads the file at path and parses it; the message of a read error names
+ * the file. */
+int scene_load(const char *path, scene *out, char *err, size_t err_size);
+
+/* Runs the generators, once per parsed scene: every discharge gets its tree.
+ * Returns 0, or -1 with a message naming the generator's path; the scene is
+ * then as parsed. */
+int scene_build(scene *s, char *err, size_t err_size);
+
+/* Builds one discharge's tree (generation happens on the calling thread);
+ * nothing to do for an explicit tree or a discharge already built. Returns 0,
+ * or -1 with a message naming the generator's path; d is then unchanged. */
+int scene_build_discharge(scene *s, size_t index, char *err, size_t err_size);
+
+/* Frees the tree scene_build gave a generator's discharge, so that the
+ * next build grows a new one; an explicit tree stays. */
+void scene_discharge_unbuild(scene_discharge *d);
+
+/* Frees what parse and build allocated; zeroes *s. NULL is a no-op. */
+void scene_deinit(scene *s);
+
+/* The listener at time t: positions interpolated linearly, directions by
+ * normalised lerp, held before the first and after the last pose; velocity
+ * is the path's slope (0 when held). */
+void scene_listener_at(const scene *s, double t_s, fg_listener *out);
+
+/* The scene's camera, or when it gives none a default framing of the
+ * built trees: their bounding sphere fills the 45 degree vertical view,
+ * seen level from the listener's side (from the trees' centre towards the
+ * listener's first position; behind the listener's forward when that is
+ * straight above or below), up +z. */
+void scene_camera_framing(const scene *s, scene_camera *out);
+
+/* The engine configuration the scene asks for (rate, block, channels, the
+ * air); voices and segments are left at 0 (the defaults) for the caller. */
+void scene_engine_config(const scene *s, fg_engine_config *out);
+
+/* The discharge indices by time, then index: the posting order. NULL when
+ * out of memory; the caller frees. */
+size_t *scene_post_order(const scene *s);
+
+/* The seed a discharge gets when it names none: a hash of the scene's seed
+ * and the discharge's index. */
+uint64_t scene_discharge_seed(uint64_t scene_seed, size_t index);
+
+#endif

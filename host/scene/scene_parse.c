@@ -1,0 +1,192 @@
+/* The scene's top level: settings, then the listener and the discharges. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene_internal.h"
+#include "fg_array.h"
+
+static const char *const top_keys[] = {
+    "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
+    "temperature_c", "humidity", "pressure", "propagation", "listener", "discharges",
+    "random", "camera", "description", NULL};
+
+static int syntax_error(const char *text, const char *at, const char *what, char *err,
+                        size_t err_size)
+{
+    int line = 1, column = 1;
+    for (const char *c = text; c < at; c++) {
+        column++;
+        if (*c == '\n') {
+            line++;
+            column = 1;
+        }
+    }
+    return json_fail(err, err_size, "", "%s at line %d, column %d", what, line, column);
+}
+
+static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_size)
+{
+    double rate = 48000, channels = 2, block = 256, seed = 1, speed = 343, temp = 20;
+    s->gain = 1;
+    s->humidity_pct = 70;
+    s->pressure_kpa = 101.325;
+    if (json_number(json, "", "sample_rate", (number_range){8000, 384000, .integer = true}, &rate,
+                    err, err_size) ||
+        json_number(json, "", "channels", (number_range){1, 2, .integer = true}, &channels, err,
+                    err_size) ||
+        json_number(json, "", "block", (number_range){1, 65536, .integer = true}, &block, err,
+                    err_size) ||
+        json_number(json, "", "duration", (number_range){0, SCENE_MAX_DURATION_S, .lo_open = true},
+                    &s->duration_s, err, err_size) ||
+        json_number(json, "", "seed", SCENE_SEED_RANGE, &seed, err, err_size) ||
+        json_number(json, "", "gain", (number_range){0, 1e9, .lo_open = true}, &s->gain, err,
+                    err_size) ||
+        json_number(json, "", "speed_of_sound", (number_range){.lo = 100, .hi = 1000}, &speed, err,
+                    err_size) ||
+        json_number(json, "", "temperature_c", (number_range){.lo = -70, .hi = 60}, &temp, err,
+                    err_size) ||
+        json_number(json, "", "humidity", (number_range){0, 100, .lo_open = true}, &s->humidity_pct,
+                    err, err_size) ||
+        json_number(json, "", "pressure", (number_range){.lo = 10, .hi = 200}, &s->pressure_kpa,
+                    err, err_size))
+        return -1;
+    const cJSON *prop = cJSON_GetObjectItemCaseSensitive(json, "propagation");
+    if (prop && scene_parse_propagation(prop, "propagation", &s->propagation, err, err_size))
+        return -1;
+    s->temperature_c = temp;
+    if (cJSON_GetObjectItemCaseSensitive(json, "temperature_c")) {
+        if (cJSON_GetObjectItemCaseSensitive(json, "speed_of_sound"))
+            return json_fail(err, err_size, "temperature_c",
+                             "give speed_of_sound or temperature_c, not both");
+        speed = 331.5 + 0.6 * temp;
+    }
+    const cJSON *desc = cJSON_GetObjectItemCaseSensitive(json, "description");
+    if (desc && !cJSON_IsString(desc))
+        return json_fail(err, err_size, "description", "expected a string");
+    s->sample_rate_hz = rate;
+    s->channels = (uint32_t)channels;
+    s->block_frames = (uint32_t)block;
+    s->seed = (uint64_t)seed;
+    s->speed_of_sound_m_s = speed;
+    return 0;
+}
+
+static int parse_discharges(const cJSON *json, scene *s, char *err, size_t err_size)
+{
+    const cJSON *list = cJSON_GetObjectItemCaseSensitive(json, "discharges");
+    if (!list && cJSON_GetObjectItemCaseSensitive(json, "random"))
+        return 0; /* random discharges only */
+    if (!list)
+        return json_fail(err, err_size, "discharges",
+                         "required (an array of discharges), unless \"random\" is given");
+    if (!cJSON_IsArray(list) || cJSON_GetArraySize(list) == 0)
+        return json_fail(err, err_size, "discharges", "expected a non-empty array");
+    size_t n = (size_t)cJSON_GetArraySize(list);
+    s->discharges = calloc(n, sizeof *s->discharges);
+    if (!s->discharges)
+        return json_fail(err, err_size, "discharges", "out of memory");
+    char path[JSON_PATH_MAX];
+    for (const cJSON *item = list->child; item; item = item->next) {
+        size_t i = s->discharge_count;
+        json_path_index(path, sizeof path, "discharges", i);
+        if (scene_parse_discharge(item, path, i, s, &s->discharges[i], err, err_size))
+            return -1;
+        s->discharge_count++;
+    }
+    return 0;
+}
+
+/* The scene must end, and nothing may be set to emit after its end. */
+static int check_duration(const scene *s, char *err, size_t err_size)
+{
+    char item[JSON_PATH_MAX], path[JSON_PATH_MAX];
+    for (size_t i = 0; i < s->discharge_count; i++) {
+        const scene_discharge *d = &s->discharges[i];
+        if (s->duration_s == 0 && d->post.continuous && d->post.duration_s == 0)
+            return json_fail(err, err_size, "duration",
+                             "required, since discharges[%zu] is continuous without a duration",
+                             i);
+        if (s->duration_s > 0 && d->post.emit_time_s >= s->duration_s) {
+            json_path_index(item, sizeof item, "discharges", i);
+            json_path_key(path, sizeof path, item, "time");
+            return json_fail(err, err_size, path, "%.16g s is not before the scene's end (%.16g s)",
+                             d->post.emit_time_s, s->duration_s);
+        }
+    }
+    return 0;
+}
+
+int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err_size)
+{
+    memset(out, 0, sizeof *out);
+    const char *end = NULL;
+    cJSON *json = cJSON_ParseWithLengthOpts(text, size, &end, 0);
+    if (!json)
+        return syntax_error(text, end ? end : text, "JSON syntax error", err, err_size);
+    while (end < text + size && *end && strchr(" \t\r\n", *end))
+        end++;
+    int rc = -1;
+    if (end < text + size)
+        syntax_error(text, end, "unexpected text after the JSON document", err, err_size);
+    else if (json_check_keys(json, "", top_keys, err, err_size) == 0 &&
+             parse_settings(json, out, err, err_size) == 0 &&
+             scene_parse_listener(cJSON_GetObjectItemCaseSensitive(json, "listener"), out, err,
+                                  err_size) == 0 &&
+             parse_discharges(json, out, err, err_size) == 0 &&
+             scene_parse_random(json, out, err, err_size) == 0 &&
+             scene_parse_camera(cJSON_GetObjectItemCaseSensitive(json, "camera"), out, err,
+                                err_size) == 0 &&
+             check_duration(out, err, err_size) == 0)
+        rc = 0;
+    out->json = json;
+    if (rc != 0)
+        scene_deinit(out);
+    return rc;
+}
+
+int scene_load(const char *path, scene *out, char *err, size_t err_size)
+{
+    memset(out, 0, sizeof *out);
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, err_size, "%s: cannot open: %s", path, strerror(errno));
+        return -1;
+    }
+    char *text = NULL;
+    size_t size = 0, cap = 0;
+    for (;;) {
+        if (size == cap) {
+            char *grown = fg_array_grow(text, &cap, size + 1, 1, 65536);
+            if (!grown)
+                break;
+            text = grown;
+        }
+        size_t got = fread(text + size, 1, cap - size, f);
+        size += got;
+        if (got == 0)
+            break;
+    }
+    int failed = ferror(f) || size == cap;
+    fclose(f);
+    int rc = -1;
+    if (failed)
+        snprintf(err, err_size, "%s: cannot read the file", path);
+    else
+        rc = scene_parse(text, size, out, err, err_size);
+    free(text);
+    return rc;
+}
+
+void scene_deinit(scene *s)
+{
+    if (!s)
+        return;
+    for (size_t i = 0; i < s->discharge_count; i++)
+        scene_discharge_free_tree(&s->discharges[i]);
+    free(s->discharges);
+    free(s->poses);
+    cJSON_Delete(s->json);
+    memset(s, 0, sizeof *s);
+}

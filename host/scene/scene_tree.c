@@ -1,0 +1,77 @@
+/* An explicit tree: "nodes": [[x, y, z, parent] or [x, y, z, parent, main]]. */
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "scene_internal.h"
+
+static const char *const tree_keys[] = {"nodes", NULL};
+
+/* Coordinates are metres; anything beyond 10 000 km is a mistake. */
+static const number_range coordinate = {.lo = -1e7, .hi = 1e7};
+static const number_range parent_index = {-1, INT32_MAX, .integer = true};
+static const number_range main_flag = {0, 1, .integer = true};
+
+static int parse_node(const cJSON *item, const char *path, fg_node *node, char *err,
+                      size_t err_size)
+{
+    int n = cJSON_GetArraySize(item);
+    if (!cJSON_IsArray(item) || n < 4 || n > 5)
+        return json_fail(err, err_size, path,
+                         "expected [x, y, z, parent] or [x, y, z, parent, main]");
+    double v[5] = {0};
+    char elem[JSON_PATH_MAX];
+    int k = 0;
+    for (const cJSON *c = item->child; c; c = c->next, k++) {
+        json_path_index(elem, sizeof elem, path, (size_t)k);
+        number_range r = k < 3 ? coordinate : k == 3 ? parent_index : main_flag;
+        if (json_number_value(c, elem, r, &v[k], err, err_size))
+            return -1;
+    }
+    *node = (fg_node){v[0], v[1], v[2], (int32_t)v[3], v[4] != 0 ? FG_NODE_MAIN : 0u};
+    return 0;
+}
+
+int scene_check_tree(const fg_node *nodes, size_t count, const char *nodes_path, char *err,
+                     size_t err_size)
+{
+    fg_tree_fault fault;
+    if (fg_tree_check(nodes, count, &fault) == FG_OK)
+        return 0;
+    char what[128], path[JSON_PATH_MAX];
+    fg_tree_fault_describe(&fault, what, sizeof what);
+    /* a fault of the whole list (too few nodes) names the list */
+    if (fault.node < count)
+        json_path_index(path, sizeof path, nodes_path, fault.node);
+    return json_fail(err, err_size, fault.node < count ? path : nodes_path, "%s", what);
+}
+
+int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[3],
+                     const fg_node **nodes, size_t *count, char *err, size_t err_size)
+{
+    char list_path[JSON_PATH_MAX], node_path[JSON_PATH_MAX];
+    json_path_key(list_path, sizeof list_path, path, "nodes");
+    if (json_check_keys(item, path, tree_keys, err, err_size))
+        return -1;
+    const cJSON *list = cJSON_GetObjectItemCaseSensitive(item, "nodes");
+    if (!cJSON_IsArray(list))
+        return json_fail(err, err_size, list_path, "required, an array of nodes");
+    size_t n = (size_t)cJSON_GetArraySize(list);
+    fg_node *out = malloc((n ? n : 1) * sizeof *out);
+    if (!out)
+        return json_fail(err, err_size, list_path, "out of memory");
+    size_t i = 0;
+    for (const cJSON *c = list->child; c; c = c->next, i++) {
+        json_path_index(node_path, sizeof node_path, list_path, i);
+        if (parse_node(c, node_path, &out[i], err, err_size))
+            goto fail;
+    }
+    fg_tree_translate(out, n, offset_m);
+    if (scene_check_tree(out, n, list_path, err, err_size))
+        goto fail;
+    *nodes = out;
+    *count = n;
+    return 0;
+fail:
+    free(out);
+    return -1;
+}

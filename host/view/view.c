@@ -1,0 +1,268 @@
+/* fulgur view: set-up, the frame loop on the GL thread, the report. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "common/commands.h"
+#include "common/clock.h"
+#include "view.h"
+#include "fg_vec3.h"
+
+/* The camera starts at the scene's framing of its first discharge. */
+static void camera_start(view *v)
+{
+    scene_camera sc;
+    scene_camera_framing(v->s, &sc);
+    fg_vec3 d = fg_v3_sub(fg_v3_load(sc.eye_m), fg_v3_load(sc.target_m));
+    memcpy(v->cam.target_m, sc.target_m, sizeof v->cam.target_m);
+    v->cam.distance_m = fg_v3_len(d);
+    v->cam.azimuth_rad = atan2(d.y, d.x);
+    v->cam.elevation_rad = asin(d.z / v->cam.distance_m);
+    v->cam.fov_y_deg = sc.fov_y_deg;
+}
+
+/* Takes the sim thread's answers: each tree becomes a flash at its emit
+ * time with the engine's stroke offsets. */
+static void take_replies(view *v, fgg_picture *pic)
+{
+    view_request *q;
+    while ((q = view_ring_pop(&v->from_sim))) {
+        v->replies++;
+        if (q->error[0]) {
+            fprintf(stderr, "fulgur view: %s\n", q->error);
+        } else if (q->kind == VIEW_REQ_STOP) {
+            fgg_picture_remove(pic, v->hold_flash);
+            v->hold_flash = 0;
+        } else {
+            v->posted++;
+            fgg_flash f = {.nodes = q->nodes, .node_count = q->node_count, .start_s = q->emit_s,
+                           .leader_s = q->continuous ? 0 : VIEW_LEADER_S,
+                           .stroke_offsets_s = q->stroke_count ? q->strokes_s : NULL,
+                           .stroke_count = q->stroke_count, .continuous = q->continuous};
+            uint32_t id = 0;
+            if (fgg_picture_add(pic, &f, &id) != FG_OK)
+                fprintf(stderr, "fulgur view: the picture refused a discharge: %s\n",
+                        fgg_error_message());
+            if (q->kind == VIEW_REQ_HOLD)
+                v->hold_flash = id;
+        }
+        free(q->nodes);
+        free(q);
+    }
+}
+
+/* One frame: events, answers, the picture at now_s. Returns -1 on a GL error. */
+static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
+                 const view_event *events, size_t count, size_t *next)
+{
+    bool headless = v->opt.backend != FGG_BACKEND_WINDOW;
+    v->now_s = headless ? k / v->opt.fps : fg_engine_time_s(v->engine);
+    if (!headless && !view_window_poll(v, ctx))
+        v->quit = true;
+    for (; *next < count && events[*next].frame <= k; ++*next)
+        view_apply(v, &events[*next]);
+    /* headless: every request answered before the audio passes this frame */
+    while (headless && v->replies < v->requests && !atomic_load(&v->stop)) {
+        take_replies(v, pic);
+        monotonic_sleep_until_ns(monotonic_now_ns() + 200000);
+    }
+    take_replies(v, pic);
+    fgg_camera cam;
+    view_camera_get(&v->cam, &cam);
+    if (fgg_picture_draw(pic, &cam, v->now_s) != FG_OK)
+        return -1;
+    if (!headless) {
+        int w, h;
+        fgg_context_framebuffer_size(ctx, &w, &h);
+        fgg_picture_blit(pic, w, h);
+        fgg_context_present(ctx);
+    } else if (v->opt.png_dir) {
+        char path[4096];
+        snprintf(path, sizeof path, "%s/frame_%04u.png", v->opt.png_dir, (unsigned)k);
+        if (fgg_picture_write_png(pic, path) != FG_OK)
+            return -1;
+    }
+    if (headless)
+        view_release_audio(v, (uint64_t)llround((k + 1) / v->opt.fps * v->rate_hz));
+    return 0;
+}
+
+static int loop(view *v, fgg_context *ctx, fgg_picture *pic, char *err, size_t err_size)
+{
+    view_event *events = NULL;
+    size_t count = 0, next = 0;
+    if (v->opt.script_path &&
+        view_script_load(v->opt.script_path, &events, &count, err, err_size) != 0)
+        return CLI_USAGE;
+    uint64_t t0 = monotonic_now_ns();
+    int rc = CLI_OK;
+    for (uint32_t k = 0; (!v->opt.frames || k < v->opt.frames) && !v->quit; k++) {
+        if (atomic_load(&v->stop))
+            break; /* the audio thread ended: its error is reported below */
+        if (frame(v, ctx, pic, k, events, count, &next) != 0) {
+            snprintf(err, err_size, "%s", fgg_error_message());
+            rc = CLI_RUNTIME;
+            break;
+        }
+        v->frames_drawn = k + 1;
+        if (v->opt.backend == FGG_BACKEND_WINDOW)
+            monotonic_sleep_until_ns(monotonic_deadline_ns(t0, k + 1, 1 / v->opt.fps));
+    }
+    free(events);
+    /* headless: the sound of every frame drawn, then stop */
+    if (v->opt.backend != FGG_BACKEND_WINDOW)
+        view_wait_audio(v);
+    return rc;
+}
+
+static void report(view *v, uint32_t frames)
+{
+    fg_engine_report st;
+    fg_engine_get_report(v->engine, &st);
+    FILE *to = v->opt.audio.kind == AUDIO_DRIVER_RAW ? stderr : stdout;
+    fprintf(to,
+            "{\"frames\": %u, \"requests\": %llu, \"posted\": %llu, \"adopted\": %llu, "
+            "\"late_events\": %llu, \"audio_frames\": %llu}\n",
+            (unsigned)frames, (unsigned long long)v->requests, (unsigned long long)st.posted,
+            (unsigned long long)st.adopted, (unsigned long long)st.late_events,
+            (unsigned long long)atomic_load(&v->audio_done));
+}
+
+/* GL, engine, driver and threads up; the loop; everything down in reverse. */
+static int view_scene(view *v)
+{
+    char err[512] = "";
+    int rc = CLI_RUNTIME;
+    fgg_context *ctx = NULL;
+    fgg_picture *pic = NULL;
+    pthread_t sim, audio;
+    int started = 0;
+    fg_engine_config cfg;
+    scene_engine_config(v->s, &cfg);
+    v->rate_hz = cfg.sample_rate_hz;
+    v->block_frames = cfg.max_block_frames = v->s->block_frames;
+    fgg_context_config cc = {.backend = v->opt.backend, .width = v->opt.width,
+                             .height = v->opt.height, .title = "fulgur view"};
+    fgg_picture_config pc = {.width = v->opt.width, .height = v->opt.height};
+    if (scene_build_discharge(v->s, 0, err, sizeof err) != 0) {
+        rc = CLI_USAGE;
+        goto done;
+    }
+    camera_start(v);
+    if (fgg_context_create(&cc, &ctx) != FG_OK || fgg_picture_create(ctx, &pc, &pic) != FG_OK) {
+        snprintf(err, sizeof err, "--gl %s: %s", fgg_backend_name(v->opt.backend),
+                 fgg_error_message());
+        goto done;
+    }
+    if (v->opt.backend == FGG_BACKEND_WINDOW && view_window_attach(v, ctx) != 0) {
+        snprintf(err, sizeof err, "--gl window: this build has no GLFW input");
+        goto done;
+    }
+    if (fg_engine_create(&cfg, &v->engine) != FG_OK) {
+        snprintf(err, sizeof err, "cannot create the engine");
+        goto done;
+    }
+    fg_listener pose;
+    scene_listener_at(v->s, 0, &pose);
+    if (fg_engine_set_listener(v->engine, &pose) != FG_OK) { /* checked by the parser */
+        snprintf(err, sizeof err, "the engine refused the scene's listener");
+        goto done;
+    }
+    for (uint32_t ch = 0; ch < v->s->channels; ch++)
+        if (!(v->planes[ch] = calloc(v->block_frames, sizeof(float)))) {
+            snprintf(err, sizeof err, "out of memory");
+            goto done;
+        }
+    if (audio_driver_start(&v->driver, &v->opt.audio, v->rate_hz, v->s->channels,
+                           v->block_frames, (float)v->s->gain, err, sizeof err))
+        goto done;
+    started = pthread_create(&sim, NULL, view_sim_thread, v) == 0;
+    started += started && pthread_create(&audio, NULL, view_audio_thread, v) == 0;
+    if (started == 2)
+        rc = loop(v, ctx, pic, err, sizeof err);
+    else
+        snprintf(err, sizeof err, "cannot start the threads");
+    view_stop(v);
+    if (started >= 1)
+        pthread_join(sim, NULL);
+    if (started == 2)
+        pthread_join(audio, NULL);
+    take_replies(v, pic); /* answers the loop did not take: free them */
+    for (view_request *q; (q = view_ring_pop(&v->to_sim));)
+        free(q);
+    if (rc == CLI_OK && v->render_result != FG_OK) {
+        snprintf(err, sizeof err, "render: %s", fg_result_str(v->render_result));
+        rc = CLI_RUNTIME;
+    } else if (rc == CLI_OK && v->audio_error[0]) {
+        snprintf(err, sizeof err, "%s", v->audio_error);
+        rc = CLI_RUNTIME;
+    }
+    char stop_err[512];
+    if (audio_driver_stop(&v->driver, rc == CLI_OK, stop_err, sizeof stop_err) != 0 &&
+        rc == CLI_OK) {
+        snprintf(err, sizeof err, "%s", stop_err);
+        rc = CLI_RUNTIME;
+    }
+    if (rc == CLI_OK)
+        report(v, v->frames_drawn);
+done:
+    fg_engine_destroy(v->engine);
+    free(v->planes[0]);
+    free(v->planes[1]);
+    fgg_picture_destroy(pic);
+    fgg_context_destroy(ctx);
+    if (rc != CLI_OK)
+        fprintf(stderr, "fulgur view: %s\n", err);
+    return rc;
+}
+
+/* The scene, which must have a discharge: the one space triggers. */
+static int load_scene(const char *path, scene *s)
+{
+    char err[512];
+    if (scene_load(path, s, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur view: %s\n", err);
+        return -1;
+    }
+    if (s->discharge_count == 0) {
+        fprintf(stderr, "fulgur view: %s: needs a discharge (the one space triggers)\n", path);
+        scene_deinit(s);
+        return -1;
+    }
+    return 0;
+}
+
+int view_main(int argc, char **argv)
+{
+    view_options opt;
+    options_result parsed = view_parse_options(argc, argv, &opt);
+    if (parsed != OPTIONS_OK)
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
+    scene s;
+    if (load_scene(opt.scene_path, &s) != 0)
+        return CLI_USAGE;
+    view *v = calloc(1, sizeof *v); /* large: the requests' state */
+    if (!v) {
+        fputs("fulgur view: out of memory\n", stderr);
+        scene_deinit(&s);
+        return CLI_RUNTIME;
+    }
+    v->opt = opt;
+    v->s = &s;
+    int rc = CLI_RUNTIME;
+    if (!fg_ring_init(&v->to_sim, VIEW_RING_SIZE, sizeof(void *)) ||
+        !fg_ring_init(&v->from_sim, VIEW_RING_SIZE, sizeof(void *))) {
+        fputs("fulgur view: out of memory\n", stderr);
+    } else {
+        pthread_mutex_init(&v->lock, NULL);
+        pthread_cond_init(&v->changed, NULL);
+        rc = view_scene(v);
+        pthread_cond_destroy(&v->changed);
+        pthread_mutex_destroy(&v->lock);
+    }
+    fg_ring_deinit(&v->to_sim);
+    fg_ring_deinit(&v->from_sim);
+    scene_deinit(&s);
+    free(v);
+    return rc;
+}

@@ -1,0 +1,177 @@
+/* fulgur view: a window (or a headless EGL context) over gpu/'s picture,
+ * with the engine sounding what it shows. One piece a file:
+ *
+ *   view.c        [gpu-thread] the frame loop: input events, the camera,
+ *                 the picture; starts and joins the other two threads
+ *   view_input.c  the one input path: GLFW callbacks (view_window.c) and
+ *                 the headless script both become view_events, applied by
+ *                 view_apply to the state
+ *   view_sim.c    [sim-thread] grows trees (generators, charges), posts
+ *                 them, answers with the tree and its stroke offsets
+ *   view_audio.c  [audio-thread] pulls fg_engine_render into an audio driver
+ *   view_gate.c   the headless lock-step between frames and audio; stopping
+ *   view_options.c, view_window.c  the command line; GLFW's callbacks
+ *
+ * The frame thread and the sim thread talk through two single-producer,
+ * single-consumer rings (view_ring): requests one way, grown trees back.
+ * Time: the picture's clock is the engine's clock, so a flash added at a
+ * discharge's emit time lights up when its sound starts there.
+ *   window    the audio thread is paced by the monotonic clock, one block
+ *             per block period, like a sound card; frames are drawn at the
+ *             engine's time as it runs.
+ *   headless  lock-step and deterministic: frame k is drawn at k / fps;
+ *             before the audio thread may render past it, every request of
+ *             that frame has been answered (posted) by the sim thread. */
+#ifndef HOST_VIEW_VIEW_H
+#define HOST_VIEW_VIEW_H
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "common/audio_driver.h"
+#include "common/options.h"
+#include "fulgur/gpu.h"
+#include "scene/scene.h"
+#include "fg_ring.h"
+
+#define VIEW_MAX_CHARGES 64
+/* A discharge is emitted this long after the frame that asked for it: time
+ * for the sim thread to grow and post it before the audio thread is there. */
+#define VIEW_LEAD_S 0.05
+/* The leader is shown growing for this long before the return stroke. */
+#define VIEW_LEADER_S 0.03
+#define VIEW_RING_SIZE 64 /* requests or trees in flight each way */
+
+typedef enum view_event_kind {
+    VIEW_EV_DISCHARGE, /* space */
+    VIEW_EV_HOLD,      /* H: start a continuous discharge, or stop it */
+    VIEW_EV_CLEAR,     /* C: remove the charges */
+    VIEW_EV_QUIT,      /* Esc, or the window closed */
+    VIEW_EV_CLICK,     /* x, y in 0..1 from the top left; sign +1 left, -1 right */
+    VIEW_EV_ORBIT,     /* dx, dy: drag in window widths / heights */
+    VIEW_EV_ZOOM       /* dy: scroll steps, positive is closer */
+} view_event_kind;
+
+typedef struct view_event {
+    uint32_t frame;    /* script: the frame it happens before */
+    view_event_kind kind;
+    double x, y;       /* click position, or drag / scroll amounts */
+    int sign;          /* click: +1 positive charge, -1 negative */
+} view_event;
+
+/* The requests and the grown trees travel as pointers through fg_ring
+ * (one producer thread, one consumer thread each): push returns false when
+ * the ring is full, pop NULL when it is empty. */
+bool view_ring_push(fg_ring *r, void *item);
+void *view_ring_pop(fg_ring *r);
+
+typedef enum view_request_kind { VIEW_REQ_ONE, VIEW_REQ_HOLD, VIEW_REQ_STOP } view_request_kind;
+
+/* Frame thread to sim thread: owned by whoever holds it; the sim thread
+ * turns it into the reply (same allocation, answered in place). */
+typedef struct view_request {
+    view_request_kind kind;
+    double emit_s;                      /* engine clock */
+    uint64_t seed;
+    size_t charge_count;                /* 0: the scene's first discharge */
+    fg_point_charge charges[VIEW_MAX_CHARGES];
+    double step_m;                      /* charges: the leader's step */
+    /* the reply */
+    fg_node *nodes;                     /* malloc'd by the sim thread; freed by the frame thread */
+    size_t node_count;
+    double strokes_s[FG_MAX_STROKES];
+    uint32_t stroke_count;
+    bool continuous;
+    char error[256];                    /* non-empty: nothing was posted */
+} view_request;
+
+typedef struct view_options {
+    const char *scene_path;
+    fgg_backend backend;
+    audio_output audio;
+    uint32_t frames;         /* 0: until Esc (window); headless needs a count */
+    double fps;              /* 60 */
+    int width, height;       /* 960 x 540 */
+    const char *png_dir;     /* headless: frame_0000.png, ... */
+    const char *script_path;
+} view_options;
+
+typedef struct view_camera {
+    double target_m[3];
+    double distance_m, azimuth_rad, elevation_rad, fov_y_deg;
+} view_camera;
+
+typedef struct view {
+    view_options opt;
+    scene *s;
+    fg_engine *engine;
+    double rate_hz;
+    uint32_t block_frames;
+    view_camera cam;
+    fg_point_charge charges[VIEW_MAX_CHARGES];
+    size_t charge_count;
+    bool holding;
+    uint32_t hold_flash;     /* the held flash's id on the picture; 0 none */
+    bool quit;
+    uint64_t requests, replies, seed_counter;
+    uint64_t posted;         /* replies without an error */
+    double now_s;            /* the picture clock of the frame being made */
+    uint32_t frames_drawn;
+
+    fg_ring to_sim, from_sim;
+    pthread_mutex_t lock;    /* the gates below; never held by the audio path's render */
+    pthread_cond_t changed;
+    uint64_t audio_target;   /* headless: the audio thread may render up to here */
+    _Atomic uint64_t audio_done; /* frames rendered */
+    atomic_bool stop;
+    audio_driver driver;
+    float *planes[2];
+    char audio_error[512];
+    fg_result render_result;
+} view;
+
+/* Reads the arguments after "view" into *o, as options_parse does
+ * (common/options.h): OPTIONS_HELP after the help, OPTIONS_BAD after the
+ * message. */
+options_result view_parse_options(int argc, char **argv, view_options *o);
+
+/* Reads a script: lines "frame N key space|h|c|escape", "frame N click X Y
+ * left|right", "frame N drag DX DY", "frame N scroll S"; '#' comments.
+ * *events is malloc'd, sorted by frame (stable). Returns 0, or -1 with a
+ * message naming the line. */
+int view_script_load(const char *path, view_event **events, size_t *count, char *err,
+                     size_t err_size);
+
+/* The one place input changes the viewer: camera, charges, requests. */
+void view_apply(view *v, const view_event *e);
+
+/* The camera as gpu/ takes it. */
+void view_camera_get(const view_camera *c, fgg_camera *out);
+
+/* Window input: installs GLFW callbacks that call view_apply. Returns -1
+ * when this build has no GLFW. [gpu-thread] */
+int view_window_attach(view *v, fgg_context *ctx);
+/* Polls the window's events; false once it should close. [gpu-thread] */
+bool view_window_poll(view *v, fgg_context *ctx);
+
+/* view_gate.c — asks the other threads to finish and wakes the waiting
+ * ones. [any-thread] */
+void view_stop(view *v);
+/* Headless: the audio thread may render up to engine frame target.
+ * [gpu-thread] */
+void view_release_audio(view *v, uint64_t target);
+/* Headless audio thread at engine frame `frames`: waits for a target past
+ * it; the frames of the next block (at most block_frames), 0 on stop. */
+uint32_t view_wait_target(view *v, uint64_t frames, uint32_t block_frames);
+/* The audio thread has rendered `frames` (audio_done; wakes a waiter). */
+void view_announce_audio(view *v, uint64_t frames);
+/* Headless: waits until the audio has rendered up to the target, or stop.
+ * [gpu-thread] */
+void view_wait_audio(view *v);
+
+void *view_sim_thread(void *arg);
+void *view_audio_thread(void *arg);
+
+#endif
