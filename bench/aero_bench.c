@@ -54,7 +54,10 @@ static void run(FILE *csv, FILE *md, const shape_case *s, int full)
         st_hi = fmax(st_hi, d->direction[i].strouhal);
         frames += d->direction[i].frames;
     }
-    double bytes = 164 + 64.0 * d->directions + 4.0 * frames * d->sources * d->components;
+    /* docs/aero-texture-format.md: header, polygon, sources, directions,
+     * samples, CRC */
+    double bytes = 160 + 16.0 * (d->polygon_vertices + d->sources) + 64.0 * d->directions +
+                   4.0 * frames * d->sources * d->components + 4;
     printf("%-10s %2u-D, %3u direction(s), %4.0f cells/D, Re %5.0f: %7.1f s wall, %6.1f CPU min, "
            "St %.3f-%.3f\n",
            s->name, d->dims, d->directions, d->cells_per_length, d->reynolds, wall, cpu / 60.0,

@@ -32,7 +32,7 @@ bad "--shape hexagon: expected" --shape hexagon --speed 10
 bad "--diameter is required" --shape circle --speed 10
 bad "--speed is required" --shape circle --diameter 0.01
 bad "--speed 0: expected a number" --shape circle --diameter 0.01 --speed 0
-bad "--speed nan: expected a number" --shape circle --diameter 0.01 --speed nan
+bad "--speed nan: expected a number in (0, 340]" --shape circle --diameter 0.01 --speed nan
 bad "--speed 10x: expected a number" --shape circle --diameter 0.01 --speed 10x
 bad "--diameter -1: expected a number" --shape circle --diameter -1 --speed 10
 bad "--side does not apply" $c --side 0.01
@@ -47,9 +47,9 @@ bad "--polygon: vertex 2 repeats the one before it" --shape polygon --polygon 0,
 bad "--polygon: the vertices enclose no area" --shape polygon --polygon 0,0,1,0,2,0 --speed 10
 bad "--length must be greater" --shape club --length 0.04 --diameters 0.02,0.05 --speed 10
 bad "--diameters 0.02: expected two" --shape club --length 0.4 --diameters 0.02 --speed 10
-bad "--grid 2: expected a number in [4" $c --grid 2
+bad "--grid 2: expected a number in 4..1024" $c --grid 2
 bad "--cfl 9: expected" $c --cfl 9
-bad "--threads 0: expected a whole number" $c --threads 0
+bad "--threads 0: expected an integer in 1..64" $c --threads 0
 bad "--sources applies to --shape club only" $c --sources 3
 bad "--directions and --step apply" $c --step 5
 bad "give --directions or --step, not both" --shape square --side 0.01 --speed 10 --directions 0,10 --step 5
@@ -64,7 +64,7 @@ bad "the flow's box would have" --shape sphere --diameter 1 --speed 10 --grid 10
 
 # -o is required
 "$fulgur" aerotex $c 2>"$tmp/stderr"
-[ $? -eq 2 ] && grep -qF -- "-o FILE is required" "$tmp/stderr" || { echo "no -o: expected exit 2 and a message"; fail=1; }
+[ $? -eq 2 ] && grep -qF -- "-o FILE.aerotex is required" "$tmp/stderr" || { echo "no -o: expected exit 2 and a message"; fail=1; }
 
 # a real texture: a coarse cylinder at Re 100 (D = 1 cm, 0.15 m/s), short
 "$fulgur" aerotex --shape circle --diameter 0.01 --speed 0.15 --grid 8 --domain 4,6,3 \

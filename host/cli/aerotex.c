@@ -1,7 +1,8 @@
 /* fulgur aerotex: computes an aerodynamic sound texture by CFD and writes
  * it to a file; --info prints a texture file's contents. */
-#define _POSIX_C_SOURCE 200809L /* isatty, fileno, clock_gettime */
+#define _POSIX_C_SOURCE 200809L /* isatty, fileno, sysconf */
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,292 +10,275 @@
 #include <unistd.h>
 
 #include "common/aero_texture_file.h"
+#include "common/clock.h"
 #include "common/commands.h"
+#include "common/options.h"
 #include "fg_math.h"
 
 #define MAX_LIST 4096
 
-static const char usage[] =
-    "usage: fulgur aerotex --shape SHAPE SIZE --speed M/S -o FILE.aerotex [OPTIONS]\n"
-    "       fulgur aerotex --info FILE.aerotex\n"
+static const char about[] =
     "Computes the aerodynamic sound texture of a shape (Dobashi et al. 2003): the\n"
     "flow past it by CFD at the base speed, the force on it, g = dF/dt as a seamless\n"
-    "loop per flow direction (2-D) or per source along it (3-D).\n"
+    "loop per flow direction (2-D) or per source along it (3-D). With --info FILE,\n"
+    "prints what a texture file holds.\n"
     "Shapes and their sizes (metres):\n"
     "  --shape circle    --diameter D          a circular cylinder (2-D)\n"
     "  --shape square    --side S              a square prism (2-D)\n"
     "  --shape rectangle --width W --height H  W along the flow at 0 degrees (2-D)\n"
     "  --shape polygon   --polygon x,y,x,y,... any simple polygon, e.g. a blade (2-D)\n"
     "  --shape sphere    --diameter D          (3-D)\n"
-    "  --shape club      --length L --diameters DH,DT  tapered, round ends (3-D)\n"
-    "Options:\n"
-    "  --speed M/S          base speed v0 (required)\n"
-    "  --tone aeolian|cavity  the level law it is played with (aeolian: (v/v0)^3)\n"
-    "  --reference M        the D of Re and St (default: the diameter, or the width\n"
-    "                       across the flow at 0 degrees, or the club's largest diameter)\n"
-    "  --grid N             cells across the reference length (32 in 2-D, 12 in 3-D)\n"
-    "  --rate HZ            texture sample rate (16 samples per D/v0: 16 kHz at 1 cm, 10 m/s)\n"
-    "  --seconds S          loop length at v0 (default 24 shedding periods)\n"
-    "  --transient S        least start-up to discard (60 D/v0 in 2-D, 30 in 3-D)\n"
-    "  --max-transient S    give up without settled shedding by then (5x --transient)\n"
-    "  --directions A,B,... flow angles to sample, degrees (default: every --step over\n"
-    "                       the range the shape's symmetry leaves)\n"
-    "  --step DEG           direction step (5)\n"
-    "  --sources N          club: sources along it (one per 3 mean diameters)\n"
-    "  --domain U,D,S       box upstream, downstream, half-width in reference lengths\n"
-    "                       (10,15,6 in 2-D; 4,8,3 in 3-D)\n"
-    "  --cfl C              free-stream Courant number of the flow steps (0.5)\n"
-    "  --viscosity M2/S     kinematic viscosity (air: 1.5e-5)\n"
-    "  --density KG/M3      (air: 1.204)\n"
-    "  --threads N          directions computed at once (the number of CPUs)\n"
-    "  --quiet              no progress line on a terminal\n"
+    "  --shape club      --length L --diameters DH,DT  tapered, round ends (3-D)\n";
+
+static const char notes[] =
     "Progress goes to stderr when it is a terminal; a summary to stdout.\n"
     "A direction in which the body does not shed is quiet (frequency 0 in the summary).\n"
     "Exit: 0 done, 1 the flow blew up or an I/O error, 2 bad arguments.\n";
 
+/* The shape as named on the command line: square is a rectangle given by
+ * --side. */
+typedef enum shape_choice { SHAPE_NONE, SHAPE_CIRCLE, SHAPE_SQUARE, SHAPE_RECTANGLE, SHAPE_POLYGON,
+                          SHAPE_SPHERE, SHAPE_CLUB } shape_choice;
+
+typedef struct number_list {
+    double v[2 * MAX_LIST];
+    int n;
+} number_list;
+
 typedef struct options {
     fg_aero_config c;
     const char *out, *info;
-    int quiet;
+    bool quiet;
+    shape_choice shape;
     double side, width, diameter, length, step_deg;
-    int have[32];
-    double polygon[2 * MAX_LIST];
-    double directions[MAX_LIST];
+    number_list polygon, directions, diameters, domain;
 } options;
 
-static int bad(const char *fmt, const char *arg)
+/* Comma-separated finite numbers, at most `most`, into list. */
+static int read_list(const char *text, number_list *list, int most, char *why, size_t why_size)
 {
-    fprintf(stderr, "fulgur aerotex: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\n(fulgur aerotex --help lists the options)\n");
-    return CLI_USAGE;
-}
-
-/* A finite number in (lo, hi] (lo_open) or [lo, hi]. */
-static int number(const char *name, const char *text, double lo, double hi, int lo_open,
-                  double *out)
-{
-    char *end;
-    double v = strtod(text, &end);
-    if (end == text || *end || !isfinite(v) || (lo_open ? !(v > lo) : !(v >= lo)) || v > hi) {
-        fprintf(stderr, "fulgur aerotex: %s %s: expected a number in %s%g, %g]\n", name, text,
-                lo_open ? "(" : "[", lo, hi);
-        return -1;
-    }
-    *out = v;
-    return 0;
-}
-
-static int whole(const char *name, const char *text, unsigned lo, unsigned hi, uint32_t *out)
-{
-    char *end;
-    long v = strtol(text, &end, 10);
-    if (end == text || *end || v < (long)lo || v > (long)hi) {
-        fprintf(stderr, "fulgur aerotex: %s %s: expected a whole number in %u..%u\n", name, text,
-                lo, hi);
-        return -1;
-    }
-    *out = (uint32_t)v;
-    return 0;
-}
-
-/* Comma-separated finite numbers; returns the count, or -1. */
-static int list(const char *name, const char *text, double *out, int most)
-{
-    int n = 0;
+    list->n = 0;
     const char *p = text;
     for (;;) {
         char *end;
         double v = strtod(p, &end);
-        if (end == p || !isfinite(v) || n == most || (*end && *end != ',')) {
-            fprintf(stderr, "fulgur aerotex: %s %s: expected up to %d numbers separated by "
-                            "commas\n", name, text, most);
+        if (end == p || !isfinite(v) || list->n == most || (*end && *end != ',')) {
+            snprintf(why, why_size, "expected up to %d numbers separated by commas", most);
             return -1;
         }
-        out[n++] = v;
+        list->v[list->n++] = v;
         if (!*end)
-            return n;
+            return 0;
         p = end + 1;
     }
 }
 
-enum { O_SHAPE, O_DIAMETER, O_SIDE, O_WIDTH, O_HEIGHT, O_POLYGON, O_LENGTH, O_DIAMETERS };
-
-static int parse(int argc, char **argv, options *o)
+static int parse_shape(const char *text, void *value, char *why, size_t why_size)
 {
-    fg_aero_config *c = &o->c;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            fputs(usage, stdout);
-            return -2;
+    static const char *names[] = {[SHAPE_CIRCLE] = "circle",   [SHAPE_SQUARE] = "square",
+                                  [SHAPE_RECTANGLE] = "rectangle", [SHAPE_POLYGON] = "polygon",
+                                  [SHAPE_SPHERE] = "sphere",   [SHAPE_CLUB] = "club"};
+    for (int k = SHAPE_CIRCLE; k <= SHAPE_CLUB; k++)
+        if (strcmp(text, names[k]) == 0) {
+            *(shape_choice *)value = (shape_choice)k;
+            return 0;
         }
-        if (strcmp(a, "--quiet") == 0) {
-            o->quiet = 1;
-            continue;
-        }
-        if (a[0] != '-')
-            return bad("unexpected argument \"%s\"", a);
-        if (!v)
-            return bad("%s needs a value", a);
-        i++;
-        int rc = 0;
-        if (strcmp(a, "--shape") == 0) {
-            static const struct {
-                const char *name;
-                fg_aero_shape shape;
-            } shapes[] = {{"circle", FG_AERO_CIRCLE},     {"square", FG_AERO_RECTANGLE},
-                          {"rectangle", FG_AERO_RECTANGLE}, {"polygon", FG_AERO_POLYGON},
-                          {"sphere", FG_AERO_SPHERE},     {"club", FG_AERO_CLUB}};
-            c->shape = 0;
-            for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; k++)
-                if (strcmp(v, shapes[k].name) == 0)
-                    c->shape = shapes[k].shape;
-            if (!c->shape)
-                return bad("--shape %s: expected circle, square, rectangle, polygon, sphere or "
-                           "club", v);
-            o->have[O_SHAPE] = strcmp(v, "square") == 0 ? 2 : 1;
-        } else if (strcmp(a, "--diameter") == 0) {
-            rc = number(a, v, 0, 100, 1, &o->diameter);
-            o->have[O_DIAMETER] = 1;
-        } else if (strcmp(a, "--side") == 0) {
-            rc = number(a, v, 0, 100, 1, &o->side);
-            o->have[O_SIDE] = 1;
-        } else if (strcmp(a, "--width") == 0) {
-            rc = number(a, v, 0, 100, 1, &o->width);
-            o->have[O_WIDTH] = 1;
-        } else if (strcmp(a, "--height") == 0) {
-            rc = number(a, v, 0, 100, 1, &c->height_m);
-            o->have[O_HEIGHT] = 1;
-        } else if (strcmp(a, "--length") == 0) {
-            rc = number(a, v, 0, 100, 1, &o->length);
-            o->have[O_LENGTH] = 1;
-        } else if (strcmp(a, "--diameters") == 0) {
-            int n = list(a, v, c->diameter_m, 2);
-            if (n != 2 || !(c->diameter_m[0] > 0) || !(c->diameter_m[1] > 0))
-                return bad("--diameters %s: expected two positive diameters, handle,tip", v);
-            o->have[O_DIAMETERS] = 1;
-        } else if (strcmp(a, "--polygon") == 0) {
-            int n = list(a, v, o->polygon, 2 * MAX_LIST);
-            if (n < 0)
-                return CLI_USAGE;
-            if (n % 2 || n < 6)
-                return bad("--polygon %s: expected x,y pairs of at least 3 vertices", v);
-            c->polygon_xy = o->polygon;
-            c->polygon_vertices = (uint32_t)(n / 2);
-            o->have[O_POLYGON] = 1;
-        } else if (strcmp(a, "--speed") == 0) {
-            rc = number(a, v, 0, 340, 1, &c->speed_m_s);
-        } else if (strcmp(a, "--tone") == 0) {
-            if (strcmp(v, "aeolian") == 0)
-                c->tone = FG_AERO_AEOLIAN;
-            else if (strcmp(v, "cavity") == 0)
-                c->tone = FG_AERO_CAVITY;
-            else
-                return bad("--tone %s: expected aeolian or cavity", v);
-        } else if (strcmp(a, "--reference") == 0) {
-            rc = number(a, v, 0, 100, 1, &c->reference_m);
-        } else if (strcmp(a, "--grid") == 0) {
-            rc = number(a, v, 4, 1024, 0, &c->cells_per_length);
-        } else if (strcmp(a, "--rate") == 0) {
-            rc = number(a, v, 0, 1e7, 1, &c->sample_rate_hz);
-        } else if (strcmp(a, "--seconds") == 0) {
-            rc = number(a, v, 0, 3600, 1, &c->seconds);
-        } else if (strcmp(a, "--transient") == 0) {
-            rc = number(a, v, 0, 3600, 1, &c->transient_s);
-        } else if (strcmp(a, "--max-transient") == 0) {
-            rc = number(a, v, 0, 36000, 1, &c->max_transient_s);
-        } else if (strcmp(a, "--directions") == 0) {
-            int n = list(a, v, o->directions, FG_AERO_MAX_DIRECTIONS);
-            if (n < 0)
-                return CLI_USAGE;
-            for (int k = 0; k < n; k++)
-                o->directions[k] *= FG_PI / 180.0;
-            c->directions_rad = o->directions;
-            c->direction_count = (uint32_t)n;
-        } else if (strcmp(a, "--step") == 0) {
-            rc = number(a, v, 0.1, 180, 0, &o->step_deg);
-            c->direction_step_rad = o->step_deg * FG_PI / 180.0;
-        } else if (strcmp(a, "--sources") == 0) {
-            rc = whole(a, v, 1, FG_AERO_MAX_SOURCES, &c->sources);
-        } else if (strcmp(a, "--domain") == 0) {
-            int n = list(a, v, c->domain, 3);
-            if (n != 3 || !(c->domain[0] > 0) || !(c->domain[1] > 0) || !(c->domain[2] > 0))
-                return bad("--domain %s: expected three positive lengths, upstream,downstream,"
-                           "half-width", v);
-        } else if (strcmp(a, "--cfl") == 0) {
-            rc = number(a, v, 0, 4, 1, &c->cfl);
-        } else if (strcmp(a, "--viscosity") == 0) {
-            rc = number(a, v, 0, 1, 1, &c->viscosity_m2_s);
-        } else if (strcmp(a, "--density") == 0) {
-            rc = number(a, v, 0, 1e4, 1, &c->density_kg_m3);
-        } else if (strcmp(a, "--threads") == 0) {
-            rc = whole(a, v, 1, 64, &c->threads);
-        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
-            o->out = v;
-        } else if (strcmp(a, "--info") == 0) {
-            o->info = v;
-        } else {
-            return bad("unknown option \"%s\"", a);
-        }
-        if (rc != 0)
-            return CLI_USAGE;
+    snprintf(why, why_size, "expected circle, square, rectangle, polygon, sphere or club");
+    return -1;
+}
+
+static int parse_tone(const char *text, void *value, char *why, size_t why_size)
+{
+    if (strcmp(text, "aeolian") == 0 || strcmp(text, "cavity") == 0) {
+        *(fg_aero_tone *)value = text[0] == 'a' ? FG_AERO_AEOLIAN : FG_AERO_CAVITY;
+        return 0;
+    }
+    snprintf(why, why_size, "expected aeolian or cavity");
+    return -1;
+}
+
+static int parse_polygon(const char *text, void *value, char *why, size_t why_size)
+{
+    number_list *l = value;
+    if (read_list(text, l, 2 * MAX_LIST, why, why_size) != 0)
+        return -1;
+    if (l->n % 2 || l->n < 6) {
+        snprintf(why, why_size, "expected x,y pairs of at least 3 vertices");
+        return -1;
     }
     return 0;
 }
 
+static int parse_directions(const char *text, void *value, char *why, size_t why_size)
+{
+    return read_list(text, value, FG_AERO_MAX_DIRECTIONS, why, why_size);
+}
+
+/* Exactly `count` positive numbers. */
+static int positive_list(const char *text, number_list *l, int count, const char *what, char *why,
+                         size_t why_size)
+{
+    int ok = read_list(text, l, count, why, why_size) == 0 && l->n == count;
+    for (int k = 0; ok && k < count; k++)
+        ok = l->v[k] > 0;
+    if (!ok) {
+        snprintf(why, why_size, "expected %s", what);
+        l->n = 0;
+    }
+    return ok ? 0 : -1;
+}
+
+static int parse_diameters(const char *text, void *value, char *why, size_t why_size)
+{
+    return positive_list(text, value, 2, "two positive diameters, handle,tip", why, why_size);
+}
+
+static int parse_domain(const char *text, void *value, char *why, size_t why_size)
+{
+    return positive_list(text, value, 3,
+                         "three positive lengths, upstream,downstream,half-width", why, why_size);
+}
+
+#define POSITIVE(hi_) {.lo = 0, .hi = (hi_), .lo_open = true}
+
+static options opts; /* large lists: off the stack */
+
+static const option table[] = {
+    {"--shape", OPTION_PARSED, &opts.shape, "SHAPE",
+     "circle, square, rectangle, polygon, sphere or club", .parse = parse_shape},
+    {"--diameter", OPTION_NUMBER, &opts.diameter, "M", "circle, sphere", .range = POSITIVE(100)},
+    {"--side", OPTION_NUMBER, &opts.side, "M", "square", .range = POSITIVE(100)},
+    {"--width", OPTION_NUMBER, &opts.width, "M", "rectangle: along the flow at 0 degrees",
+     .range = POSITIVE(100)},
+    {"--height", OPTION_NUMBER, &opts.c.height_m, "M", "rectangle: across it",
+     .range = POSITIVE(100)},
+    {"--polygon", OPTION_PARSED, &opts.polygon, "X,Y,...", "polygon: its vertices in order",
+     .parse = parse_polygon},
+    {"--length", OPTION_NUMBER, &opts.length, "M", "club: overall", .range = POSITIVE(100)},
+    {"--diameters", OPTION_PARSED, &opts.diameters, "DH,DT", "club: at the handle and the tip",
+     .parse = parse_diameters},
+    {"--speed", OPTION_NUMBER, &opts.c.speed_m_s, "M/S", "base speed v0 (required)",
+     .range = POSITIVE(340)},
+    {"--tone", OPTION_PARSED, &opts.c.tone, "aeolian|cavity",
+     "the level law it is played with (aeolian: (v/v0)^3)", .parse = parse_tone},
+    {"--reference", OPTION_NUMBER, &opts.c.reference_m, "M",
+     "the D of Re and St (default: the diameter, or the width\nacross the flow at 0 "
+     "degrees, or the club's largest diameter)", .range = POSITIVE(100)},
+    {"--grid", OPTION_NUMBER, &opts.c.cells_per_length, "N",
+     "cells across the reference length (32 in 2-D, 12 in 3-D)",
+     .range = {.lo = 4, .hi = 1024}},
+    {"--rate", OPTION_NUMBER, &opts.c.sample_rate_hz, "HZ",
+     "texture sample rate (16 samples per D/v0: 16 kHz at 1 cm, 10 m/s)",
+     .range = POSITIVE(1e7)},
+    {"--seconds", OPTION_NUMBER, &opts.c.seconds, "S",
+     "loop length at v0 (default 24 shedding periods)", .range = POSITIVE(3600)},
+    {"--transient", OPTION_NUMBER, &opts.c.transient_s, "S",
+     "least start-up to discard (60 D/v0 in 2-D, 30 in 3-D)", .range = POSITIVE(3600)},
+    {"--max-transient", OPTION_NUMBER, &opts.c.max_transient_s, "S",
+     "give up without settled shedding by then (5x --transient)",
+     .range = POSITIVE(36000)},
+    {"--directions", OPTION_PARSED, &opts.directions, "A,B,...",
+     "flow angles to sample, degrees (default: every --step over\nthe range the shape's "
+     "symmetry leaves)", .parse = parse_directions},
+    {"--step", OPTION_NUMBER, &opts.step_deg, "DEG", "direction step (5)",
+     .range = {.lo = 0.1, .hi = 180}},
+    {"--sources", OPTION_INTEGER, &opts.c.sources, "N",
+     "club: sources along it (one per 3 mean diameters)",
+     .range = {.lo = 1, .hi = FG_AERO_MAX_SOURCES}},
+    {"--domain", OPTION_PARSED, &opts.domain, "U,D,S",
+     "box upstream, downstream, half-width in reference lengths\n(10,15,6 in 2-D; 4,8,3 "
+     "in 3-D)", .parse = parse_domain},
+    {"--cfl", OPTION_NUMBER, &opts.c.cfl, "C",
+     "free-stream Courant number of the flow steps (0.5)", .range = POSITIVE(4)},
+    {"--viscosity", OPTION_NUMBER, &opts.c.viscosity_m2_s, "M2/S",
+     "kinematic viscosity (air: 1.5e-5)", .range = POSITIVE(1)},
+    {"--density", OPTION_NUMBER, &opts.c.density_kg_m3, "KG/M3", "(air: 1.204)",
+     .range = POSITIVE(1e4)},
+    {"--threads", OPTION_INTEGER, &opts.c.threads, "N",
+     "directions computed at once (the number of CPUs)", .range = {.lo = 1, .hi = 64}},
+    {"--quiet", OPTION_FLAG, &opts.quiet, NULL, .help = "no progress line on a terminal"},
+    {"-o", OPTION_TEXT, &opts.out, "FILE.aerotex", .help = "the texture to write"},
+    {"--info", OPTION_TEXT, &opts.info, "FILE.aerotex",
+     .help = "print what a texture file holds (alone)"},
+    {0},
+};
+
+static const command_line cl = {"fulgur aerotex", "", 0, 0, about, notes, table};
+
 /* Which size options each shape takes; the others are refused. */
-static int sizes(options *o)
+static options_result sizes(options *o)
 {
     fg_aero_config *c = &o->c;
-    static const char *names[] = {"", "--diameter", "--side", "--width", "--height",
-                                  "--polygon", "--length", "--diameters"};
-    int wants[8] = {0};
-    switch (c->shape) {
-    case FG_AERO_CIRCLE:
-    case FG_AERO_SPHERE:
-        wants[O_DIAMETER] = 1;
+    enum { DIAMETER, SIDE, WIDTH, HEIGHT, POLYGON, LENGTH, DIAMETERS, SIZES };
+    static const char *names[SIZES] = {"--diameter", "--side", "--width", "--height",
+                                       "--polygon", "--length", "--diameters"};
+    bool have[SIZES] = {o->diameter > 0, o->side > 0, o->width > 0, c->height_m > 0,
+                        o->polygon.n > 0, o->length > 0, o->diameters.n > 0};
+    bool wants[SIZES] = {false};
+    switch (o->shape) {
+    case SHAPE_CIRCLE:
+    case SHAPE_SPHERE:
+        c->shape = o->shape == SHAPE_CIRCLE ? FG_AERO_CIRCLE : FG_AERO_SPHERE;
+        wants[DIAMETER] = true;
         c->length_m = o->diameter;
         break;
-    case FG_AERO_RECTANGLE:
-        if (o->have[O_SHAPE] == 2) {
-            wants[O_SIDE] = 1;
-            c->length_m = c->height_m = o->side;
-        } else {
-            wants[O_WIDTH] = wants[O_HEIGHT] = 1;
-            c->length_m = o->width;
-        }
+    case SHAPE_SQUARE:
+        c->shape = FG_AERO_RECTANGLE;
+        wants[SIDE] = true;
+        c->length_m = o->side;
         break;
-    case FG_AERO_POLYGON:
-        wants[O_POLYGON] = 1;
+    case SHAPE_RECTANGLE:
+        c->shape = FG_AERO_RECTANGLE;
+        wants[WIDTH] = wants[HEIGHT] = true;
+        c->length_m = o->width;
         break;
-    case FG_AERO_CLUB:
-        wants[O_LENGTH] = wants[O_DIAMETERS] = 1;
+    case SHAPE_POLYGON:
+        c->shape = FG_AERO_POLYGON;
+        wants[POLYGON] = true;
+        c->polygon_xy = o->polygon.v;
+        c->polygon_vertices = (uint32_t)(o->polygon.n / 2);
+        break;
+    case SHAPE_CLUB:
+        c->shape = FG_AERO_CLUB;
+        wants[LENGTH] = wants[DIAMETERS] = true;
         c->length_m = o->length;
-        if (o->have[O_LENGTH] && o->have[O_DIAMETERS] &&
+        c->diameter_m[0] = o->diameters.v[0];
+        c->diameter_m[1] = o->diameters.v[1];
+        if (have[LENGTH] && have[DIAMETERS] &&
             !(o->length > fmax(c->diameter_m[0], c->diameter_m[1])))
-            return bad("%s", "--length must be greater than both --diameters");
+            return options_fail(&cl, "--length must be greater than both --diameters");
         break;
     default:
-        return bad("%s", "--shape is required");
+        return options_fail(&cl, "--shape is required");
     }
-    for (int k = O_DIAMETER; k <= O_DIAMETERS; k++) {
-        if (wants[k] && !o->have[k])
-            return bad("%s is required for this --shape", names[k]);
-        if (!wants[k] && o->have[k])
-            return bad("%s does not apply to this --shape", names[k]);
+    for (int k = 0; k < SIZES; k++) {
+        if (wants[k] && !have[k])
+            return options_fail(&cl, "%s is required for this --shape", names[k]);
+        if (!wants[k] && have[k])
+            return options_fail(&cl, "%s does not apply to this --shape", names[k]);
     }
+    if (o->shape == SHAPE_SQUARE)
+        c->height_m = o->side;
+    if (o->directions.n > 0) {
+        for (int k = 0; k < o->directions.n; k++)
+            o->directions.v[k] *= FG_PI / 180.0;
+        c->directions_rad = o->directions.v;
+        c->direction_count = (uint32_t)o->directions.n;
+    }
+    c->direction_step_rad = o->step_deg * FG_PI / 180.0;
+    for (int k = 0; k < o->domain.n; k++)
+        c->domain[k] = o->domain.v[k];
     if (c->sources > 0 && c->shape != FG_AERO_CLUB)
-        return bad("%s", "--sources applies to --shape club only");
+        return options_fail(&cl, "--sources applies to --shape club only");
     if ((c->directions_rad || c->direction_step_rad > 0) &&
         (c->shape == FG_AERO_CIRCLE || c->shape == FG_AERO_SPHERE || c->shape == FG_AERO_CLUB))
-        return bad("%s", "--directions and --step apply to 2-D shapes without full symmetry "
-                         "(square, rectangle, polygon)");
+        return options_fail(&cl, "--directions and --step apply to 2-D shapes without full "
+                                 "symmetry (square, rectangle, polygon)");
     if (c->directions_rad && c->direction_step_rad > 0)
-        return bad("%s", "give --directions or --step, not both");
+        return options_fail(&cl, "give --directions or --step, not both");
     if (c->max_transient_s > 0 && c->transient_s > c->max_transient_s)
-        return bad("%s", "--max-transient must be at least --transient");
-    return 0;
+        return options_fail(&cl, "--max-transient must be at least --transient");
+    return OPTIONS_OK;
 }
 
 /* What fg_aero_config_check found, in the options' words. */
@@ -349,14 +333,13 @@ static int explain(const fg_aero_check *w)
         snprintf(m, sizeof m, "%s is out of range", name ? name : "a value");
     }
     }
-    return bad("%s", m);
+    options_fail(&cl, "%s", m);
+    return CLI_USAGE;
 }
 
 static double now_s(void)
 {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+    return 1e-9 * (double)monotonic_now_ns();
 }
 
 typedef struct progress_state {
@@ -408,19 +391,20 @@ static void print_texture(FILE *to, const fg_aero_texture *t)
 
 int aerotex_main(int argc, char **argv)
 {
-    static options o; /* large lists: off the stack */
-    memset(&o, 0, sizeof o);
-    int rc = parse(argc, argv, &o);
-    if (rc == -2)
-        return CLI_OK;
-    if (rc != 0)
-        return rc;
+    options *o = &opts;
+    memset(o, 0, sizeof *o);
+    size_t operands;
+    options_result parsed = options_parse(&cl, argc, argv, NULL, &operands);
+    if (parsed != OPTIONS_OK)
+        return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
     char err[512];
-    if (o.info) {
-        if (argc != 3)
-            return bad("%s", "--info takes a file and no other option");
+    if (o->info) {
+        if (argc != 3) {
+            options_fail(&cl, "--info takes a file and no other option");
+            return CLI_USAGE;
+        }
         fg_aero_texture *t;
-        if (aero_texture_load(o.info, &t, err, sizeof err) != 0) {
+        if (aero_texture_load(o->info, &t, err, sizeof err) != 0) {
             fprintf(stderr, "fulgur aerotex: %s\n", err);
             return CLI_USAGE;
         }
@@ -428,24 +412,28 @@ int aerotex_main(int argc, char **argv)
         fg_aero_texture_destroy(t);
         return CLI_OK;
     }
-    if ((rc = sizes(&o)) != 0)
-        return rc;
-    if (!(o.c.speed_m_s > 0))
-        return bad("%s", "--speed is required");
-    if (!o.out)
-        return bad("%s", "-o FILE is required");
+    if (sizes(o) != OPTIONS_OK)
+        return CLI_USAGE;
+    if (!(o->c.speed_m_s > 0)) {
+        options_fail(&cl, "--speed is required");
+        return CLI_USAGE;
+    }
+    if (!o->out) {
+        options_fail(&cl, "-o FILE.aerotex is required");
+        return CLI_USAGE;
+    }
     fg_aero_check why;
-    if (fg_aero_config_check(&o.c, &why) != FG_OK)
+    if (fg_aero_config_check(&o->c, &why) != FG_OK)
         return explain(&why);
-    if (!o.c.threads) {
+    if (!o->c.threads) {
         long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-        o.c.threads = cpus > 0 && cpus < 64 ? (uint32_t)cpus : 1;
+        o->c.threads = cpus > 0 && cpus < 64 ? (uint32_t)cpus : 1;
     }
     progress_state ps = {.start = now_s()};
-    int show = !o.quiet && isatty(fileno(stderr));
+    int show = !o->quiet && isatty(fileno(stderr));
     clock_t cpu0 = clock();
     fg_aero_texture *t;
-    fg_result r = fg_aero_generate(&o.c, show ? show_progress : NULL, &ps, &t);
+    fg_result r = fg_aero_generate(&o->c, show ? show_progress : NULL, &ps, &t);
     if (ps.shown)
         fputc('\n', stderr);
     if (r != FG_OK) {
@@ -456,12 +444,12 @@ int aerotex_main(int argc, char **argv)
         return r == FG_ERR_NOT_CONVERGED || r == FG_ERR_NO_MEMORY ? CLI_RUNTIME : CLI_USAGE;
     }
     double cpu = (double)(clock() - cpu0) / CLOCKS_PER_SEC, wall = now_s() - ps.start;
-    if (aero_texture_save(t, o.out, err, sizeof err) != 0) {
+    if (aero_texture_save(t, o->out, err, sizeof err) != 0) {
         fprintf(stderr, "fulgur aerotex: %s\n", err);
         fg_aero_texture_destroy(t);
         return CLI_RUNTIME;
     }
-    fprintf(stdout, "%s: ", o.out);
+    fprintf(stdout, "%s: ", o->out);
     print_texture(stdout, t);
     fprintf(stdout, "  computed in %.1f s, %.1f s of CPU\n", wall, cpu);
     fg_aero_texture_destroy(t);
