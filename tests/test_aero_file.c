@@ -143,8 +143,8 @@ static void refused(const uint8_t *b, size_t size, const char *needle)
 
 /* Header offsets (docs/aero-texture-format.md). */
 enum { VERSION = 8, HEADER = 12, SHAPE = 16, TONE = 20, DIMS = 24, SOURCES = 32,
-       DIRECTIONS = 36, VERTICES = 40, ROTATION = 44, SPEED = 96, REYNOLDS = 120, RATE = 128,
-       FIRST_DIRECTION = 160 + 64 + 16 };
+       DIRECTIONS = 36, VERTICES = 40, ROTATION = 44, RESERVED = 52, SPEED = 96, REYNOLDS = 120,
+       RATE = 128, FIRST_DIRECTION = 160 + 64 + 16 };
 
 static void corrupt(void **state)
 {
@@ -194,6 +194,7 @@ static void corrupt(void **state)
         {DIRECTIONS, 2, "counts make"},
         {VERTICES, 5000, "polygon vertices is 5000"},
         {ROTATION, 13, "rotation order is 13"},
+        {RESERVED, 32, "the reserved word is 32"},
         {SHAPE, FG_AERO_CIRCLE, "not a valid texture"},          /* a polygon called a circle */
         {FIRST_DIRECTION + 60, 0, "direction 0 has 0 frames"},
         {FIRST_DIRECTION + 60, 41, "counts make"},

@@ -225,7 +225,8 @@ int aero_texture_decode(const uint8_t *b, size_t size, const char *name, fg_aero
         count_in(d.polygon_vertices, 0, FG_AERO_MAX_POLYGON, "polygon vertices", name, err,
                  err_size) ||
         count_in(d.rotation_order, 0, 12, "rotation order", name, err, err_size) ||
-        count_in(d.mirror, 0, 1, "mirror", name, err, err_size))
+        count_in(d.mirror, 0, 1, "mirror", name, err, err_size) ||
+        count_in(get_u32(b + OFF_RESERVED), 0, 0, "the reserved word", name, err, err_size))
         return -1;
     static const struct {
         int offset;
