@@ -51,11 +51,8 @@ heading "2/3 tests under ThreadSanitizer (build-tsan/)"
 # cannot see: tests/tsan.supp names it. test_gpu_context is left out here:
 # its OSMesa-on-a-second-thread case trips an internal CHECK of TSan's own
 # runtime (tsan_interceptors_posix.cpp:1983); it holds no thread of ours.
-# The cfd-labelled tests are single-threaded numerics (a minute each here,
-# ten under TSan); the threads of the texture generator are exercised
-# under TSan by test_aero_texture.
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tests/tsan.supp ${TSAN_OPTIONS:-}"
-CTEST_EXTRA=(-E '^test_gpu_context$' -LE cfd)
+CTEST_EXTRA=(-E '^test_gpu_context$')
 no_aslr=()
 if setarch "$(uname -m)" -R true 2>/dev/null; then
     no_aslr=(setarch "$(uname -m)" -R)
