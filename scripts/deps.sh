@@ -6,7 +6,7 @@ fulgur_install_deps() {
               libpng-dev zlib1g-dev gnuplot-nox libcmocka-dev clang-14 libfuzzer-14-dev
               libclang-rt-14-dev lv2-dev liblilv-dev sordi
               libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
-              libglfw3-dev xvfb xauth python3
+              libglfw3-dev libfreetype-dev libfontconfig-dev fonts-dejavu-core xvfb xauth python3
               ${FULGUR_DEPS_EXTRA:-})
   local missing=()
   for p in "${pkgs[@]}"; do

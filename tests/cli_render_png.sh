@@ -1,7 +1,8 @@
 #!/bin/sh
 # usage: cli_render_png.sh FULGUR SCENE
 # fulgur render --png twice: the PNG exists, is a PNG with light in it, and
-# the two runs give identical bytes; no temporary file is left.
+# the two runs give identical bytes; no temporary file is left. --size is
+# honoured; a --png-time before anything is lit warns; the usage errors.
 set -u
 fulgur=$1
 scene=$2
@@ -20,7 +21,24 @@ if "$fulgur" render "$scene" -o "$tmp/c.wav" --png "$tmp/missing/c.png"; then
     echo "an unwritable --png path was accepted"; exit 1
 fi
 [ ! -e "$tmp/missing" ] || exit 1
-# --png-time without --png is a usage error
+# --png-time and --size without --png are usage errors
 "$fulgur" render "$scene" -o "$tmp/d.wav" --png-time 1 2>/dev/null
 [ $? -eq 2 ] || { echo "--png-time alone should exit 2"; exit 1; }
+"$fulgur" render "$scene" -o "$tmp/d.wav" --size 320x200 2>/dev/null
+[ $? -eq 2 ] || { echo "--size alone should exit 2"; exit 1; }
+"$fulgur" render "$scene" -o "$tmp/d.wav" --png "$tmp/d.png" --size 8x8 2>/dev/null
+[ $? -eq 2 ] || { echo "--size 8x8 should exit 2"; exit 1; }
+# --size: the PNG's header says 320 x 200 (IHDR's width and height)
+"$fulgur" render "$scene" -o "$tmp/e.wav" --png "$tmp/e.png" --size 320x200 > "$tmp/e.out" || exit 1
+[ "$(od -An -tx1 -j16 -N8 "$tmp/e.png" | tr -d ' \n')" = "00000140000000c8" ] ||
+    { echo "--size 320x200 gave another size"; exit 1; }
+grep -q "(320 x 200)" "$tmp/e.out" || { echo "unexpected: $(cat "$tmp/e.out")"; exit 1; }
+# before the first leader (at 0.02 s): a warning naming the times, still a picture
+"$fulgur" render "$scene" -o "$tmp/f.wav" --png "$tmp/f.png" --png-time 0 2> "$tmp/f.err" > /dev/null ||
+    { echo "--png-time 0 failed"; exit 1; }
+grep -q "warning: --png-time 0 s is before anything is lit: the first leader starts at 0.02 s" \
+    "$tmp/f.err" || { echo "no warning before the first leader: $(cat "$tmp/f.err")"; exit 1; }
+[ -s "$tmp/f.png" ] || { echo "no picture with the warning"; exit 1; }
+"$fulgur" render "$scene" -o "$tmp/g.wav" --png "$tmp/g.png" 2> "$tmp/g.err" > /dev/null || exit 1
+[ ! -s "$tmp/g.err" ] || { echo "a warning at the first return stroke: $(cat "$tmp/g.err")"; exit 1; }
 echo "PNG $(wc -c < "$tmp/a.png") bytes, identical over two runs"

@@ -7,7 +7,7 @@ usage: layout_check.py REPO          checks REPO/host and REPO/gpu/src
 
 Each folder may include (and call) only from itself and the folders it is
 allowed to depend on:
-  host: common <- scene <- {cli, run, view}; lv2 <- common
+  host: common <- scene <- picture <- {cli, view}; scene <- run; lv2 <- common
   gpu:  context <- {field, picture}
 An include names its folder ("scene/scene.h") unless it is in the same
 folder. Within a folder, neither the includes nor the calls between files
@@ -24,9 +24,10 @@ RULES = {
     "host": {
         "common": {"common"},
         "scene": {"scene", "common"},
-        "cli": {"cli", "scene", "common"},
+        "picture": {"picture", "scene", "common"},
+        "cli": {"cli", "picture", "scene", "common"},
         "run": {"run", "scene", "common"},
-        "view": {"view", "scene", "common"},
+        "view": {"view", "picture", "scene", "common"},
         "lv2": {"lv2", "common"},
     },
     "gpu/src": {
@@ -178,6 +179,8 @@ def self_test():
         ("an unknown folder", {"host/misc/m.c": "\n"}, "host/misc/: a folder the rules"),
         ("field includes picture", {"gpu/src/field/f.c": '#include "picture/p.h"\n'},
          'gpu/src/field/f.c: includes "picture/p.h"'),
+        ("picture includes view", {"host/picture/p.c": '#include "view/view.h"\n'},
+         'picture/p.c: includes "view/view.h"'),
     ]
     failures = 0
     with tempfile.TemporaryDirectory() as root:

@@ -196,6 +196,7 @@ int render_main(int argc, char **argv)
 {
     const char *scene_path = NULL, *out_path = NULL, *png_path = NULL;
     double png_time = NAN; /* NAN: not given (the parser takes finite numbers only) */
+    option_size png_size = {0, 0}; /* 0: not given */
     const option table[] = {
         {"-o", OPTION_TEXT, &out_path, "OUT.wav", .help = "the WAV to write", .required = true},
         {"--png", OPTION_TEXT, &png_path, "OUT.png",
@@ -204,13 +205,15 @@ int render_main(int argc, char **argv)
         {"--png-time", OPTION_NUMBER, &png_time, "SECONDS",
          .help = "the picture's time (default: the first return stroke)",
          .range = {.lo = -INFINITY, .hi = INFINITY}},
+        {"--size", OPTION_PARSED, &png_size, "WxH",
+         .help = "the picture in pixels (default 1280x720)", .parse = option_parse_size},
         {0},
     };
     const command_line cl = {"fulgur render", "SCENE.json", 1, 1, about, notes, table};
     size_t operands;
     options_result parsed = options_parse(&cl, argc, argv, &scene_path, &operands);
-    if (parsed == OPTIONS_OK && !isnan(png_time) && !png_path)
-        parsed = options_fail(&cl, "--png-time needs --png");
+    if (parsed == OPTIONS_OK && (!isnan(png_time) || png_size.width) && !png_path)
+        parsed = options_fail(&cl, "%s needs --png", png_size.width ? "--size" : "--png-time");
     if (parsed != OPTIONS_OK)
         return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
 #ifndef FULGUR_HAVE_GPU
@@ -234,7 +237,8 @@ int render_main(int argc, char **argv)
     int rc = render_file(&s, out_path);
 #ifdef FULGUR_HAVE_GPU
     if (rc == CLI_OK && png_path &&
-        render_picture(&s, png_path, png_time, err, sizeof err) != 0) {
+        render_picture(&s, png_path, png_time, png_size.width ? png_size.width : 1280,
+                       png_size.width ? png_size.height : 720, err, sizeof err) != 0) {
         fprintf(stderr, "fulgur: %s\n", err);
         rc = CLI_RUNTIME;
     }

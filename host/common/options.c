@@ -142,6 +142,21 @@ static bool is_one_of(const uint32_t *list, double v)
 }
 
 /* Reads the argument text of o into its value. */
+int option_parse_size(const char *text, void *size, char *why, size_t why_size)
+{
+    option_size *o = size;
+    char *end;
+    long w = strtol(text, &end, 10), h = 0;
+    if (*end == 'x')
+        h = strtol(end + 1, &end, 10);
+    if (*end || w < 16 || h < 16 || w > 8192 || h > 8192) {
+        snprintf(why, why_size, "expected WIDTHxHEIGHT in pixels, each 16..8192");
+        return -1;
+    }
+    o->width = (int)w, o->height = (int)h;
+    return 0;
+}
+
 static options_result read_value(const command_line *cl, const option *o, const char *text)
 {
     char range[96], why[256];

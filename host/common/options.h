@@ -70,6 +70,15 @@ options_result options_parse(const command_line *cl, int argc, char **argv, cons
  * Returns 0, or -1 (*out unchanged). */
 int option_number(const char *text, number_range range, double *out);
 
+/* A picture's size in pixels, each 16..8192: the value of an
+ * OPTION_PARSED "--size WxH" whose parse is option_parse_size. */
+typedef struct option_size {
+    int width, height;
+} option_size;
+
+/* "WxH" into the option_size at size. Returns 0, or -1 with why. */
+int option_parse_size(const char *text, void *size, char *why, size_t why_size);
+
 /* A usage error that the command finds after parsing (an option that
  * needs another): "COMMAND: message" and the usage line to stderr.
  * Returns OPTIONS_BAD. */

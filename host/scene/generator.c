@@ -1,5 +1,6 @@
 /* The table of scene generator types. Each generator adds its entry here
- * (its "type" name and the function that fills the tree). */
+ * (its "type" name, the function that fills the tree, and for a field
+ * generator the one that gives its conductors). */
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
@@ -7,12 +8,12 @@
 #include "generator.h"
 
 static const gen_entry table[] = {
-    {"lightning", gen_lightning},
-    {"charges", gen_charges},
-    {"spark_gap", gen_spark_gap},
-    {"plasma_ball", gen_plasma_ball},
-    {"field", gen_field},
-    {NULL, NULL}, /* the end */
+    {"lightning", gen_lightning, NULL, SCENE_APPARATUS_NONE},
+    {"charges", gen_charges, NULL, SCENE_APPARATUS_NONE},
+    {"spark_gap", gen_spark_gap, gen_spark_gap_shapes, SCENE_APPARATUS_SPARK_GAP},
+    {"plasma_ball", gen_plasma_ball, gen_plasma_ball_shapes, SCENE_APPARATUS_PLASMA_BALL},
+    {"field", gen_field, gen_field_shapes, SCENE_APPARATUS_FIELD},
+    {NULL, NULL, NULL, SCENE_APPARATUS_NONE}, /* the end */
 };
 
 const gen_entry *gen_find(const char *type)

@@ -9,7 +9,9 @@
 
 #include <cjson/cJSON.h>
 
+#include "fulgur/field.h"
 #include "fulgur/tree.h"
+#include "scene.h"
 
 typedef struct gen_context {
     uint64_t seed;              /* the discharge's seed */
@@ -33,9 +35,20 @@ typedef int gen_fn(const cJSON *spec, const char *path, const gen_context *ctx, 
  *                          from the scene); docs/generators-field.md */
 gen_fn gen_lightning, gen_charges, gen_spark_gap, gen_plasma_ball, gen_field;
 
+/* The conductors a field generator grows its tree among (in its own
+ * frame, as fg_field_set_shapes takes them), into shapes[0 .. *count)
+ * (at most FG_FIELD_MAX_SHAPES), and the grid's box in *box_min_m,
+ * *box_max_m. Returns 0, or -1 with a message as gen_fn's. */
+typedef int gen_shapes_fn(const cJSON *spec, const char *path, fg_shape *shapes, size_t *count,
+                          double box_min_m[3], double box_max_m[3], char *err, size_t err_size);
+
+gen_shapes_fn gen_spark_gap_shapes, gen_plasma_ball_shapes, gen_field_shapes;
+
 typedef struct gen_entry {
     const char *type;  /* the value of "type" in the generator object */
     gen_fn *generate;
+    gen_shapes_fn *shapes; /* NULL: it grows in no field (lightning, charges) */
+    scene_apparatus_kind apparatus; /* what its shapes are, for the picture */
 } gen_entry;
 
 /* The entry for a type name, or NULL. */

@@ -296,20 +296,58 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
     return 0;
 }
 
+/* The preset's field scene on the grid "size" asks for. */
+static int preset_scene(const ctx *c, fg_preset preset, const cJSON *spec, fg_field_scene *s)
+{
+    int size = FG_FIELD_DEFAULT_SIZE;
+    if (integer(c, spec, "size", "size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size))
+        return -1;
+    if (fg_field_scene_preset(preset, size, s) != FG_OK)
+        return fail(c, "size", "must be %d..%d", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE);
+    return 0;
+}
+
 static int generate_preset(fg_preset preset, const cJSON *spec, const char *path,
                            const gen_context *gc, fg_tree *out, char *err, size_t err_size)
 {
     ctx c = {path, err, err_size};
-    int size = FG_FIELD_DEFAULT_SIZE, dbm = 0, solver = SOLVER_CPU;
-    if (integer(&c, spec, "size", "size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size))
-        return -1;
+    int dbm = 0, solver = SOLVER_CPU;
     fg_field_scene s;
-    if (fg_field_scene_preset(preset, size, &s) != FG_OK)
-        return fail(&c, "size", "must be %d..%d", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE);
+    if (preset_scene(&c, preset, spec, &s))
+        return -1;
     s.growth.seed = gc->seed;
     if (parse_growth(&c, spec, &s.growth, &dbm) || parse_solver(&c, spec, dbm, &solver))
         return -1;
     return run(&c, &s.grid, s.shapes, s.shape_count, &s.growth, dbm, solver, out);
+}
+
+static int preset_shapes(fg_preset preset, const cJSON *spec, const char *path, fg_shape *shapes,
+                         size_t *count, double box_min_m[3], double box_max_m[3], char *err,
+                         size_t err_size)
+{
+    ctx c = {path, err, err_size};
+    fg_field_scene s;
+    if (preset_scene(&c, preset, spec, &s))
+        return -1;
+    memcpy(shapes, s.shapes, s.shape_count * sizeof *shapes);
+    *count = s.shape_count;
+    memcpy(box_min_m, s.grid.min_m, 3 * sizeof *box_min_m);
+    memcpy(box_max_m, s.grid.max_m, 3 * sizeof *box_max_m);
+    return 0;
+}
+
+int gen_spark_gap_shapes(const cJSON *spec, const char *path, fg_shape *shapes, size_t *count,
+                         double box_min_m[3], double box_max_m[3], char *err, size_t err_size)
+{
+    return preset_shapes(FG_PRESET_SPARK_BALLS, spec, path, shapes, count, box_min_m, box_max_m,
+                         err, err_size);
+}
+
+int gen_plasma_ball_shapes(const cJSON *spec, const char *path, fg_shape *shapes, size_t *count,
+                           double box_min_m[3], double box_max_m[3], char *err, size_t err_size)
+{
+    return preset_shapes(FG_PRESET_PLASMA_BALL, spec, path, shapes, count, box_min_m, box_max_m,
+                         err, err_size);
 }
 
 int gen_spark_gap(const cJSON *spec, const char *path, const gen_context *gc, fg_tree *out,
@@ -324,26 +362,49 @@ int gen_plasma_ball(const cJSON *spec, const char *path, const gen_context *gc, 
     return generate_preset(FG_PRESET_PLASMA_BALL, spec, path, gc, out, err, err_size);
 }
 
+/* "grid" and "shapes" of a field generator. */
+static int parse_field(const ctx *c, const cJSON *spec, fg_grid_config *grid, fg_shape *shapes,
+                       size_t *count)
+{
+    if (parse_grid(c, spec, grid))
+        return -1;
+    const cJSON *list = cJSON_GetObjectItemCaseSensitive(spec, "shapes");
+    if (!cJSON_IsArray(list) || cJSON_GetArraySize(list) < 2)
+        return fail(c, "shapes", "is required: an array with an origin and a target shape");
+    int n = cJSON_GetArraySize(list);
+    if (n > FG_FIELD_MAX_SHAPES)
+        return fail(c, "shapes", "at most %d shapes", FG_FIELD_MAX_SHAPES);
+    for (int i = 0; i < n; i++) {
+        char field[32];
+        snprintf(field, sizeof field, "shapes[%d]", i);
+        if (parse_shape(c, cJSON_GetArrayItem(list, i), field, &shapes[i]))
+            return -1;
+    }
+    *count = (size_t)n;
+    return 0;
+}
+
+int gen_field_shapes(const cJSON *spec, const char *path, fg_shape *shapes, size_t *count,
+                     double box_min_m[3], double box_max_m[3], char *err, size_t err_size)
+{
+    ctx c = {path, err, err_size};
+    fg_grid_config grid = {0};
+    if (parse_field(&c, spec, &grid, shapes, count))
+        return -1;
+    memcpy(box_min_m, grid.min_m, 3 * sizeof *box_min_m);
+    memcpy(box_max_m, grid.max_m, 3 * sizeof *box_max_m);
+    return 0;
+}
+
 int gen_field(const cJSON *spec, const char *path, const gen_context *gc, fg_tree *out,
               char *err, size_t err_size)
 {
     ctx c = {path, err, err_size};
     fg_grid_config grid = {0};
     fg_shape shapes[FG_FIELD_MAX_SHAPES];
-    if (parse_grid(&c, spec, &grid))
+    size_t count;
+    if (parse_field(&c, spec, &grid, shapes, &count))
         return -1;
-    const cJSON *list = cJSON_GetObjectItemCaseSensitive(spec, "shapes");
-    if (!cJSON_IsArray(list) || cJSON_GetArraySize(list) < 2)
-        return fail(&c, "shapes", "is required: an array with an origin and a target shape");
-    int count = cJSON_GetArraySize(list);
-    if (count > FG_FIELD_MAX_SHAPES)
-        return fail(&c, "shapes", "at most %d shapes", FG_FIELD_MAX_SHAPES);
-    for (int i = 0; i < count; i++) {
-        char field[32];
-        snprintf(field, sizeof field, "shapes[%d]", i);
-        if (parse_shape(&c, cJSON_GetArrayItem(list, i), field, &shapes[i]))
-            return -1;
-    }
     const cJSON *growth = cJSON_GetObjectItemCaseSensitive(spec, "growth");
     if (!cJSON_IsObject(growth) || !cJSON_GetObjectItemCaseSensitive(growth, "step"))
         return fail(&c, "growth.step", "is required: the segment length in metres");
@@ -351,5 +412,5 @@ int gen_field(const cJSON *spec, const char *path, const gen_context *gc, fg_tre
     int dbm = 0, solver = SOLVER_CPU;
     if (parse_growth(&c, spec, &g, &dbm) || parse_solver(&c, spec, dbm, &solver))
         return -1;
-    return run(&c, &grid, shapes, (size_t)count, &g, dbm, solver, out);
+    return run(&c, &grid, shapes, count, &g, dbm, solver, out);
 }

@@ -99,12 +99,42 @@ void scene_deinit(scene *s);
  * is the path's slope (0 when held). */
 void scene_listener_at(const scene *s, double t_s, fg_listener *out);
 
-/* The scene's camera, or when it gives none a default framing of the
- * built trees: their bounding sphere fills the 45 degree vertical view,
- * seen level from the listener's side (from the trees' centre towards the
- * listener's first position; behind the listener's forward when that is
- * straight above or below), up +z. */
-void scene_camera_framing(const scene *s, scene_camera *out);
+/* What a discharge happens among, as the picture shows it. */
+typedef enum scene_apparatus_kind {
+    SCENE_APPARATUS_NONE = 0,    /* open air: lightning, a charges leader, any other tree */
+    SCENE_APPARATUS_SPARK_GAP,   /* two ball electrodes */
+    SCENE_APPARATUS_PLASMA_BALL, /* a central electrode inside a glass globe */
+    SCENE_APPARATUS_FIELD        /* the "field" generator's conductors */
+} scene_apparatus_kind;
+
+typedef struct scene_apparatus {
+    scene_apparatus_kind kind;
+    /* the conductors, in the scene's frame (the offset applied); a "ground"
+     * shape becomes the plane z = offset z, its normal +z */
+    fg_shape shapes[FG_FIELD_MAX_SHAPES];
+    size_t shape_count;
+    double box_min_m[3], box_max_m[3]; /* the field's grid box, scene frame */
+} scene_apparatus;
+
+/* The apparatus of discharge index: a field generator's shapes
+ * (spark_gap, plasma_ball, field); for an explicit tree of the spark_balls
+ * preset two balls fitted to it (radius half the distance from the root
+ * to the main channel's end, one beyond each), of the plasma_ball preset
+ * a globe around its root through its farthest node with an electrode of
+ * 0.15 of that radius (the preset's proportions, docs/picture.md); none
+ * otherwise. The discharge must be built. Returns 0, or -1 with a message
+ * naming the generator's path. */
+int scene_discharge_apparatus(const scene *s, size_t index, scene_apparatus *out, char *err,
+                              size_t err_size);
+
+/* The scene's camera, or when it gives none a default framing of
+ * discharge index (built) and its apparatus, for a picture of aspect
+ * width / height: lightning seen from the ground at the listener's
+ * height, from the listener's side, the horizon low in the frame and the
+ * channel's top near its top edge; anything else seen from the
+ * listener's side and a little above (12 degrees), close enough that its
+ * bounds fill the 45 degree vertical view or the horizontal one. */
+void scene_camera_framing(const scene *s, size_t index, double aspect, scene_camera *out);
 
 /* The engine configuration the scene asks for (rate, block, channels, the
  * air); voices and segments are left at 0 (the defaults) for the caller. */

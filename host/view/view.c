@@ -5,21 +5,8 @@
 
 #include "common/commands.h"
 #include "common/clock.h"
+#include "picture/picture.h"
 #include "view.h"
-#include "fg_vec3.h"
-
-/* The camera starts at the scene's framing of its first discharge. */
-static void camera_start(view *v)
-{
-    scene_camera sc;
-    scene_camera_framing(v->s, &sc);
-    fg_vec3 d = fg_v3_sub(fg_v3_load(sc.eye_m), fg_v3_load(sc.target_m));
-    memcpy(v->cam.target_m, sc.target_m, sizeof v->cam.target_m);
-    v->cam.distance_m = fg_v3_len(d);
-    v->cam.azimuth_rad = atan2(d.y, d.x);
-    v->cam.elevation_rad = asin(d.z / v->cam.distance_m);
-    v->cam.fov_y_deg = sc.fov_y_deg;
-}
 
 /* Takes the sim thread's answers: each tree becomes a flash at its emit
  * time with the engine's stroke offsets. */
@@ -35,10 +22,8 @@ static void take_replies(view *v, fgg_picture *pic)
             v->hold_flash = 0;
         } else {
             v->posted++;
-            fgg_flash f = {.nodes = q->nodes, .node_count = q->node_count, .start_s = q->emit_s,
-                           .leader_s = q->continuous ? 0 : VIEW_LEADER_S,
-                           .stroke_offsets_s = q->stroke_count ? q->strokes_s : NULL,
-                           .stroke_count = q->stroke_count, .continuous = q->continuous};
+            fgg_flash f;
+            picture_flash(&q->post, q->preset, q->emit_s, q->strokes_s, q->stroke_count, &f);
             uint32_t id = 0;
             if (fgg_picture_add(pic, &f, &id) != FG_OK)
                 fprintf(stderr, "fulgur view: the picture refused a discharge: %s\n",
@@ -51,22 +36,26 @@ static void take_replies(view *v, fgg_picture *pic)
     }
 }
 
-/* One frame: events, answers, the picture at now_s. Returns -1 on a GL error. */
+/* One frame: events, the scene's timeline, answers, the picture at now_s.
+ * Returns -1 on a GL error. */
 static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
                  const view_event *events, size_t count, size_t *next)
 {
     bool headless = v->opt.backend != FGG_BACKEND_WINDOW;
+    double before = v->now_s;
     v->now_s = headless ? k / v->opt.fps : fg_engine_time_s(v->engine);
     if (!headless && !view_window_poll(v, ctx))
         v->quit = true;
     for (; *next < count && events[*next].frame <= k; ++*next)
         view_apply(v, &events[*next]);
+    view_timeline_step(v, k == 0 ? 0 : v->now_s - before);
     /* headless: every request answered before the audio passes this frame */
     while (headless && v->replies < v->requests && !atomic_load(&v->stop)) {
         take_replies(v, pic);
         monotonic_sleep_until_ns(monotonic_now_ns() + 200000);
     }
     take_replies(v, pic);
+    view_overlay_show(v);
     fgg_camera cam;
     view_camera_get(&v->cam, &cam);
     if (fgg_picture_draw(pic, &cam, v->now_s) != FG_OK)
@@ -141,19 +130,31 @@ static int view_scene(view *v)
     scene_engine_config(v->s, &cfg);
     v->rate_hz = cfg.sample_rate_hz;
     v->block_frames = cfg.max_block_frames = v->s->block_frames;
-    fgg_context_config cc = {.backend = v->opt.backend, .width = v->opt.width,
-                             .height = v->opt.height, .title = "fulgur view"};
-    fgg_picture_config pc = {.width = v->opt.width, .height = v->opt.height};
-    if (scene_build_discharge(v->s, 0, err, sizeof err) != 0) {
+    fgg_context_config cc = {.backend = v->opt.backend, .width = v->opt.size.width,
+                             .height = v->opt.size.height, .title = "fulgur view"};
+    fgg_picture_config pc;
+    picture_config(v->s, v->opt.size.width, v->opt.size.height, &pc);
+    if (scene_build(v->s, err, sizeof err) != 0) {
         rc = CLI_USAGE;
         goto done;
     }
-    camera_start(v);
+    if (view_timeline_init(v) != 0) {
+        snprintf(err, sizeof err, "out of memory");
+        goto done;
+    }
     if (fgg_context_create(&cc, &ctx) != FG_OK || fgg_picture_create(ctx, &pc, &pic) != FG_OK) {
         snprintf(err, sizeof err, "--gl %s: %s", fgg_backend_name(v->opt.backend),
                  fgg_error_message());
         goto done;
     }
+    v->pic = pic;
+    if (picture_add_surroundings(pic, v->s, err, sizeof err) != 0)
+        goto done;
+    char why[256];
+    v->overlay = view_overlay_create(v->opt.size.height, why, sizeof why);
+    v->overlay_on = v->opt.backend == FGG_BACKEND_WINDOW && v->overlay;
+    if (!v->overlay && v->opt.backend == FGG_BACKEND_WINDOW)
+        fprintf(stderr, "fulgur view: no overlay of the controls: %s\n", why);
     if (v->opt.backend == FGG_BACKEND_WINDOW && view_window_attach(v, ctx) != 0) {
         snprintf(err, sizeof err, "--gl window: this build has no GLFW input");
         goto done;
@@ -209,6 +210,8 @@ done:
     fg_engine_destroy(v->engine);
     free(v->planes[0]);
     free(v->planes[1]);
+    view_overlay_destroy(v->overlay);
+    view_timeline_deinit(v);
     fgg_picture_destroy(pic);
     fgg_context_destroy(ctx);
     if (rc != CLI_OK)

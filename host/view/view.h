@@ -3,12 +3,20 @@
  *
  *   view.c        [gpu-thread] the frame loop: input events, the camera,
  *                 the picture; starts and joins the other two threads
+ *   view_timeline.c [gpu-thread] the scene's timed discharges, played from
+ *                 the start (and again on R), and the camera that follows
+ *                 them
+ *   view_overlay.c [gpu-thread] the controls and live counters over the
+ *                 picture (FreeType text)
  *   view_input.c  the one input path: GLFW callbacks (view_window.c) and
  *                 the headless script both become view_events, applied by
  *                 view_apply to the state
+ *   view_request.c [gpu-thread] the requests to the sim thread and their
+ *                 rings
  *   view_sim.c    [sim-thread] grows trees (generators, charges), posts
  *                 them, answers with the tree and its stroke offsets
- *   view_audio.c  [audio-thread] pulls fg_engine_render into an audio driver
+ *   view_audio.c  [audio-thread] pulls fg_engine_render into an audio driver,
+ *                 keeping the last callbacks' durations for the overlay
  *   view_gate.c   the headless lock-step between frames and audio; stopping
  *   view_options.c, view_window.c  the command line; GLFW's callbacks
  *
@@ -40,14 +48,20 @@
 /* A discharge is emitted this long after the frame that asked for it: time
  * for the sim thread to grow and post it before the audio thread is there. */
 #define VIEW_LEAD_S 0.05
-/* The leader is shown growing for this long before the return stroke. */
-#define VIEW_LEADER_S 0.03
+/* A scene's timed discharge is asked of the sim thread this long before
+ * its emit time, so that its leader is drawn from its start. */
+#define VIEW_TIMELINE_AHEAD_S 0.25
 #define VIEW_RING_SIZE 64 /* requests or trees in flight each way */
+/* The audio callbacks whose durations the overlay's p99 is taken over. */
+#define VIEW_RECENT_CALLBACKS 512
 
 typedef enum view_event_kind {
     VIEW_EV_DISCHARGE, /* space */
     VIEW_EV_HOLD,      /* H: start a continuous discharge, or stop it */
     VIEW_EV_CLEAR,     /* C: remove the charges */
+    VIEW_EV_REPLAY,    /* R: play the scene's timed discharges again, from now */
+    VIEW_EV_FRAME,     /* F: frame the scene's latest discharge and follow them again */
+    VIEW_EV_OVERLAY,   /* F1: show or hide the controls and counters */
     VIEW_EV_QUIT,      /* Esc, or the window closed */
     VIEW_EV_CLICK,     /* x, y in 0..1 from the top left; sign +1 left, -1 right */
     VIEW_EV_ORBIT,     /* dx, dy: drag in window widths / heights */
@@ -67,13 +81,19 @@ typedef struct view_event {
 bool view_ring_push(fg_ring *r, void *item);
 void *view_ring_pop(fg_ring *r);
 
-typedef enum view_request_kind { VIEW_REQ_ONE, VIEW_REQ_HOLD, VIEW_REQ_STOP } view_request_kind;
+typedef enum view_request_kind {
+    VIEW_REQ_ONE,   /* space: the scene's first discharge anew, or a leader between charges */
+    VIEW_REQ_HOLD,  /* H: a continuous discharge until the next VIEW_REQ_STOP */
+    VIEW_REQ_STOP,
+    VIEW_REQ_SCENE  /* one of the scene's timed discharges, as the scene gives it */
+} view_request_kind;
 
 /* Frame thread to sim thread: owned by whoever holds it; the sim thread
  * turns it into the reply (same allocation, answered in place). */
 typedef struct view_request {
     view_request_kind kind;
     double emit_s;                      /* engine clock */
+    size_t scene_index;                 /* VIEW_REQ_SCENE: which discharge */
     uint64_t seed;
     size_t charge_count;                /* 0: the scene's first discharge */
     fg_point_charge charges[VIEW_MAX_CHARGES];
@@ -83,7 +103,8 @@ typedef struct view_request {
     size_t node_count;
     double strokes_s[FG_MAX_STROKES];
     uint32_t stroke_count;
-    bool continuous;
+    fg_discharge post;                  /* as posted (its nodes: the reply's) */
+    fg_preset preset;                   /* its sound's, which also colours its picture */
     char error[256];                    /* non-empty: nothing was posted */
 } view_request;
 
@@ -93,7 +114,7 @@ typedef struct view_options {
     audio_output audio;
     uint32_t frames;         /* 0: until Esc (window); headless needs a count */
     double fps;              /* 60 */
-    int width, height;       /* 960 x 540 */
+    option_size size;        /* 960 x 540 */
     const char *png_dir;     /* headless: frame_0000.png, ... */
     const char *script_path;
 } view_options;
@@ -103,15 +124,31 @@ typedef struct view_camera {
     double distance_m, azimuth_rad, elevation_rad, fov_y_deg;
 } view_camera;
 
+typedef struct view_overlay view_overlay;
+
 typedef struct view {
     view_options opt;
     scene *s;
     fg_engine *engine;
+    fgg_picture *pic;        /* the frame thread's */
     double rate_hz;
     uint32_t block_frames;
     view_camera cam;
+    /* the scene's timeline: the discharges by time, when the scene started
+     * playing (0, or the last R), and each one's framing, worked out before
+     * the threads start */
+    size_t *order;
+    size_t next, next_framed; /* the next to ask for, and to turn the camera to */
+    double timeline_start_s;
+    view_camera *framing;
+    bool follow;             /* the camera eases to each timed discharge's framing */
+    view_camera goal;
+    size_t framed;           /* the discharge the camera frames */
     fg_point_charge charges[VIEW_MAX_CHARGES];
+    uint32_t markers[VIEW_MAX_CHARGES]; /* each charge's marker on the picture */
     size_t charge_count;
+    bool overlay_on;
+    view_overlay *overlay;   /* NULL: no font (no FreeType in this build) */
     bool holding;
     uint32_t hold_flash;     /* the held flash's id on the picture; 0 none */
     bool quit;
@@ -130,6 +167,10 @@ typedef struct view {
     float *planes[2];
     char audio_error[512];
     fg_result render_result;
+    /* the durations of the last audio callbacks, microseconds, written by
+     * the audio thread and read by the overlay */
+    _Atomic uint32_t recent_us[VIEW_RECENT_CALLBACKS];
+    _Atomic uint64_t callbacks;
 } view;
 
 /* Reads the arguments after "view" into *o, as options_parse does
@@ -137,7 +178,7 @@ typedef struct view {
  * message. */
 options_result view_parse_options(int argc, char **argv, view_options *o);
 
-/* Reads a script: lines "frame N key space|h|c|escape", "frame N click X Y
+/* Reads a script: lines "frame N key space|h|c|r|f|f1|escape", "frame N click X Y
  * left|right", "frame N drag DX DY", "frame N scroll S"; '#' comments.
  * *events is malloc'd, sorted by frame (stable). Returns 0, or -1 with a
  * message naming the line. */
@@ -149,6 +190,33 @@ void view_apply(view *v, const view_event *e);
 
 /* The camera as gpu/ takes it. */
 void view_camera_get(const view_camera *c, fgg_camera *out);
+/* A scene camera as the viewer's orbit. */
+void view_camera_set(view_camera *c, const scene_camera *sc);
+
+/* view_request.c: asks the sim thread for a discharge (kind; index for
+ * VIEW_REQ_SCENE) emitted at emit_s on the engine clock. */
+void view_request_discharge(view *v, view_request_kind kind, size_t index, double emit_s);
+
+/* view_timeline.c — the scene's timeline and the following camera.
+ * Works out every discharge's framing (before the threads start).
+ * Returns 0, or -1 out of memory. */
+int view_timeline_init(view *v);
+void view_timeline_deinit(view *v);
+/* Asks for the timed discharges due by now_s, and moves the camera one
+ * frame of dt_s towards its goal. */
+void view_timeline_step(view *v, double dt_s);
+/* Plays the scene again from now. */
+void view_timeline_replay(view *v);
+/* Frames the latest timed discharge and follows them again. */
+void view_timeline_frame(view *v);
+
+/* view_overlay.c — the controls and counters. Creates the overlay's font
+ * (fontconfig's "monospace" through FreeType) for a picture height.
+ * Returns NULL with why in err when there is none. */
+view_overlay *view_overlay_create(int picture_height, char *err, size_t err_size);
+void view_overlay_destroy(view_overlay *o);
+/* Lays the overlay over the picture, or takes it away when hidden. */
+void view_overlay_show(view *v);
 
 /* Window input: installs GLFW callbacks that call view_apply. Returns -1
  * when this build has no GLFW. [gpu-thread] */

@@ -1,7 +1,8 @@
 /* The viewer's audio thread: fg_engine_render one block at a time into
- * the audio drivers (common/audio_driver.h). Window: paced by the monotonic
- * clock to absolute deadlines one block period apart, as run paces its null
- * device, whatever the driver (a player reading raw:- wants real time).
+ * the audio drivers (common/audio_driver.h), each call's duration kept for
+ * the overlay (view_overlay.c). Window: paced by the monotonic clock to
+ * absolute deadlines one block period apart, as run paces its null device,
+ * whatever the driver (a player reading raw:- wants real time).
  * Headless: lock-step, rendering up to the frame thread's audio_target.
  * Paced, the loop takes no lock; headless, the gate's lock (view_gate.c)
  * is taken between blocks to wait for the target and to announce progress. */
@@ -27,7 +28,14 @@ void *view_audio_thread(void *arg)
         } else {
             monotonic_sleep_until_ns(monotonic_deadline_ns(start_ns, block, period_s));
         }
+        uint64_t t0 = monotonic_now_ns();
         fg_result r = fg_engine_render(v->engine, v->planes, n);
+        uint64_t took_us = (monotonic_now_ns() - t0) / 1000;
+        uint64_t k = atomic_load_explicit(&v->callbacks, memory_order_relaxed);
+        atomic_store_explicit(&v->recent_us[k % VIEW_RECENT_CALLBACKS],
+                              took_us > UINT32_MAX ? UINT32_MAX : (uint32_t)took_us,
+                              memory_order_relaxed);
+        atomic_store_explicit(&v->callbacks, k + 1, memory_order_release);
         if (r != FG_OK) {
             v->render_result = r; /* read by the frame thread after the join */
             break;

@@ -10,17 +10,6 @@
 #include "fg_array.h"
 
 
-bool view_ring_push(fg_ring *r, void *item)
-{
-    return fg_ring_push(r, &item);
-}
-
-void *view_ring_pop(fg_ring *r)
-{
-    void *item;
-    return fg_ring_pop(r, &item) ? item : NULL;
-}
-
 static int parse_line(char *line, view_event *e)
 {
     char what[16] = "", a[32] = "", b[32] = "", c[32] = "";
@@ -35,6 +24,7 @@ static int parse_line(char *line, view_event *e)
             const char *name;
             view_event_kind kind;
         } keys[] = {{"space", VIEW_EV_DISCHARGE}, {"h", VIEW_EV_HOLD}, {"c", VIEW_EV_CLEAR},
+                    {"r", VIEW_EV_REPLAY},      {"f", VIEW_EV_FRAME}, {"f1", VIEW_EV_OVERLAY},
                     {"escape", VIEW_EV_QUIT}};
         for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
             if (strcmp(a, keys[i].name) == 0) {
@@ -109,7 +99,7 @@ int view_script_load(const char *path, view_event **events, size_t *count, char 
         }
         if (parse_line(line, &list[n]) != 0) {
             snprintf(err, err_size,
-                     "%s:%u: expected \"frame N key space|h|c|escape\", \"frame N click X Y "
+                     "%s:%u: expected \"frame N key space|h|c|r|f|f1|escape\", \"frame N click X Y "
                      "left|right\" (X, Y in 0..1), \"frame N drag DX DY\" or \"frame N scroll S\"",
                      path, number);
             rc = -1;
@@ -128,17 +118,6 @@ int view_script_load(const char *path, view_event **events, size_t *count, char 
     return 0;
 }
 
-void view_camera_get(const view_camera *c, fgg_camera *out)
-{
-    double ce = cos(c->elevation_rad), se = sin(c->elevation_rad);
-    double dir[3] = {ce * cos(c->azimuth_rad), ce * sin(c->azimuth_rad), se};
-    *out = (fgg_camera){.up = {0, 0, 1}, .fov_y_deg = c->fov_y_deg};
-    for (int k = 0; k < 3; k++) {
-        out->target_m[k] = c->target_m[k];
-        out->eye_m[k] = c->target_m[k] + c->distance_m * dir[k];
-    }
-}
-
 /* The point under (x, y) on the plane through the target facing the eye. */
 static void unproject(const view *v, double x, double y, double out[3])
 {
@@ -152,58 +131,76 @@ static void unproject(const view *v, double x, double y, double out[3])
     fg_v3_store(rv, r);
     fg_v3_store(fg_v3_cross(rv, fv), u);
     double half_h = v->cam.distance_m * tan(v->cam.fov_y_deg * FG_PI / 360.0);
-    double aspect = (double)v->opt.width / v->opt.height;
+    double aspect = (double)v->opt.size.width / v->opt.size.height;
     for (int k = 0; k < 3; k++)
         out[k] = cam.target_m[k] + (2 * x - 1) * half_h * aspect * r[k] + (1 - 2 * y) * half_h * u[k];
 }
 
-static void request(view *v, view_request_kind kind)
+/* A charge where the click lands, and its marker on the picture. */
+static void place_charge(view *v, const view_event *e)
 {
-    view_request *q = calloc(1, sizeof *q);
-    if (!q)
+    if (v->charge_count == VIEW_MAX_CHARGES)
         return;
-    q->kind = kind;
-    q->emit_s = v->now_s + VIEW_LEAD_S;
-    q->seed = scene_discharge_seed(v->s->seed, (size_t)v->seed_counter++);
-    q->charge_count = v->charge_count;
-    memcpy(q->charges, v->charges, v->charge_count * sizeof *q->charges);
-    /* the leader's step: a fiftieth of the view's height at the target */
-    q->step_m = 2 * v->cam.distance_m * tan(v->cam.fov_y_deg * FG_PI / 360.0) / 50;
-    if (view_ring_push(&v->to_sim, q))
-        v->requests++;
-    else
-        free(q);
+    fg_point_charge *q = &v->charges[v->charge_count];
+    unproject(v, e->x, e->y, q->position_m);
+    q->charge_c = e->sign;
+    fgg_drawable m = {.kind = FGG_DRAWABLE_MARKER, .marker = {.sign = e->sign}};
+    memcpy(m.marker.position_m, q->position_m, sizeof m.marker.position_m);
+    v->markers[v->charge_count] = 0;
+    if (v->pic && fgg_picture_add_drawable(v->pic, &m, &v->markers[v->charge_count]) != FG_OK)
+        fprintf(stderr, "fulgur view: the charge's marker: %s\n", fgg_error_message());
+    v->charge_count++;
+}
+
+static void clear_charges(view *v)
+{
+    for (size_t i = 0; i < v->charge_count; i++)
+        if (v->markers[i])
+            fgg_picture_remove(v->pic, v->markers[i]);
+    v->charge_count = 0;
 }
 
 void view_apply(view *v, const view_event *e)
 {
+    double soon = v->now_s + VIEW_LEAD_S;
     switch (e->kind) {
     case VIEW_EV_DISCHARGE:
-        request(v, VIEW_REQ_ONE);
+        view_request_discharge(v, VIEW_REQ_ONE, 0, soon);
         break;
     case VIEW_EV_HOLD:
         v->holding = !v->holding;
-        request(v, v->holding ? VIEW_REQ_HOLD : VIEW_REQ_STOP);
+        view_request_discharge(v, v->holding ? VIEW_REQ_HOLD : VIEW_REQ_STOP, 0, soon);
         break;
     case VIEW_EV_CLEAR:
-        v->charge_count = 0;
+        clear_charges(v);
+        break;
+    case VIEW_EV_REPLAY:
+        view_timeline_replay(v);
+        break;
+    case VIEW_EV_FRAME:
+        view_timeline_frame(v);
+        break;
+    case VIEW_EV_OVERLAY:
+        v->overlay_on = !v->overlay_on;
+        if (!v->overlay)
+            fprintf(stderr, "fulgur view: no overlay: this fulgur has no font for it (it "
+                            "needs FreeType, fontconfig and a monospace font)\n");
         break;
     case VIEW_EV_QUIT:
         v->quit = true;
         break;
     case VIEW_EV_CLICK:
-        if (v->charge_count < VIEW_MAX_CHARGES) {
-            fg_point_charge *q = &v->charges[v->charge_count++];
-            unproject(v, e->x, e->y, q->position_m);
-            q->charge_c = e->sign;
-        }
+        v->follow = false; /* the charges stay where they were placed in the view */
+        place_charge(v, e);
         break;
     case VIEW_EV_ORBIT:
+        v->follow = false;
         v->cam.azimuth_rad -= e->x * FG_PI;
         v->cam.elevation_rad += e->y * FG_PI / 2;
         v->cam.elevation_rad = fmax(-1.4, fmin(1.4, v->cam.elevation_rad));
         break;
     case VIEW_EV_ZOOM:
+        v->follow = false;
         v->cam.distance_m *= pow(0.9, e->y);
         break;
     }

@@ -23,26 +23,10 @@ static int parse_backend(const char *text, void *backend, char *why, size_t why_
     return -1;
 }
 
-/* "WxH" into the options' width and height. */
-static int parse_size(const char *text, void *options, char *why, size_t why_size)
-{
-    view_options *o = options;
-    char *end;
-    long w = strtol(text, &end, 10), h = 0;
-    if (*end == 'x')
-        h = strtol(end + 1, &end, 10);
-    if (*end || w < 16 || h < 16 || w > 8192 || h > 8192) {
-        snprintf(why, why_size, "expected WIDTHxHEIGHT in pixels, each 16..8192");
-        return -1;
-    }
-    o->width = (int)w, o->height = (int)h;
-    return 0;
-}
-
 options_result view_parse_options(int argc, char **argv, view_options *o)
 {
     *o = (view_options){.backend = FGG_BACKEND_WINDOW, .audio = {AUDIO_DRIVER_NULL, NULL},
-                        .fps = 60, .width = 960, .height = 540};
+                        .fps = 60, .size = {960, 540}};
     const option table[] = {
         {"--gl", OPTION_PARSED, &o->backend, "window|egl|osmesa",
          .help = "window (the default) needs a display; egl and osmesa run\n"
@@ -56,8 +40,9 @@ options_result view_parse_options(int argc, char **argv, view_options *o)
          .range = {.lo = 1, .hi = 1e7}},
         {"--fps", OPTION_NUMBER, &o->fps, "HZ", .help = "frames per second (default 60)",
          .range = {.lo = 1, .hi = 1000}},
-        {"--size", OPTION_PARSED, o, "WxH", .help = "the picture in pixels (default 960x540)",
-         .parse = parse_size},
+        {"--size", OPTION_PARSED, &o->size, "WxH",
+         .help = "the window and its picture in pixels (default 960x540)",
+         .parse = option_parse_size},
         {"--png-dir", OPTION_TEXT, &o->png_dir, "DIR",
          .help = "headless: write DIR/frame_0000.png, frame_0001.png, ..."},
         {"--script", OPTION_TEXT, &o->script_path, "FILE",

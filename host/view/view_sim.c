@@ -2,8 +2,10 @@
  * tree (grown here, never on the frame or audio thread), a post, and a
  * reply carrying the tree and the stroke offsets the engine will use.
  *
- * The tree: with no charges placed, the scene's first discharge, rebuilt
- * with the request's seed when it has a generator. With charges, the
+ * A timed discharge of the scene is posted as the scene gives it (its tree
+ * was built before the threads started). For space, with no charges
+ * placed, the scene's first discharge, rebuilt with the request's seed
+ * when it has a generator. With charges, the
  * "charges" growth (fulgur/charges.h, Sosorbaram / Abe): the field of the
  * placed point charges steers the leader, which is what placing charges
  * means physically. The leader starts one step from the first charge
@@ -60,9 +62,9 @@ static int grow_charges(const view_request *q, fg_tree *tree, char *err, size_t 
 /* The tree for q into q->nodes (malloc'd). */
 static int grow(view *v, view_request *q)
 {
-    if (q->charge_count == 0) {
-        scene_discharge *d = &v->s->discharges[0];
-        if (d->generator) { /* a new tree for each discharge */
+    if (q->kind == VIEW_REQ_SCENE || q->charge_count == 0) {
+        scene_discharge *d = &v->s->discharges[q->kind == VIEW_REQ_SCENE ? q->scene_index : 0];
+        if (d->generator && q->kind != VIEW_REQ_SCENE) { /* a new tree for each press */
             scene_discharge_unbuild(d);
             d->post.seed = q->seed;
             if (scene_build_discharge(v->s, 0, q->error, sizeof q->error) != 0)
@@ -105,10 +107,13 @@ static void answer(view *v, view_request *q, fg_voice_id *held)
     }
     if (grow(v, q) != 0)
         return;
-    fg_discharge post = v->s->discharges[0].post;
+    const scene_discharge *d = &v->s->discharges[q->kind == VIEW_REQ_SCENE ? q->scene_index : 0];
+    fg_discharge post = d->post;
+    q->preset = d->preset;
     post.nodes = q->nodes;
     post.node_count = q->node_count;
-    post.seed = q->seed;
+    if (q->kind != VIEW_REQ_SCENE)
+        post.seed = q->seed;
     post.emit_time_s = fmax(q->emit_s, fg_engine_time_s(v->engine));
     q->emit_s = post.emit_time_s;
     if (q->kind == VIEW_REQ_HOLD) {
@@ -116,7 +121,7 @@ static void answer(view *v, view_request *q, fg_voice_id *held)
         post.strokes = 1;
         post.duration_s = 0; /* until H again; the scene's repeat, else the engine's */
     }
-    q->continuous = post.continuous;
+    q->post = post;
     q->stroke_count = fg_discharge_stroke_offsets(&post, q->strokes_s, FG_MAX_STROKES);
     if (q->stroke_count > FG_MAX_STROKES)
         q->stroke_count = FG_MAX_STROKES;

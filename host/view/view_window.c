@@ -29,6 +29,12 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
         send((view_event){.kind = VIEW_EV_HOLD});
     else if (key == GLFW_KEY_C)
         send((view_event){.kind = VIEW_EV_CLEAR});
+    else if (key == GLFW_KEY_R)
+        send((view_event){.kind = VIEW_EV_REPLAY});
+    else if (key == GLFW_KEY_F)
+        send((view_event){.kind = VIEW_EV_FRAME});
+    else if (key == GLFW_KEY_F1)
+        send((view_event){.kind = VIEW_EV_OVERLAY});
     else if (key == GLFW_KEY_ESCAPE)
         send((view_event){.kind = VIEW_EV_QUIT});
 }

@@ -1,15 +1,15 @@
 /* The discharge picture on Mesa llvmpipe (EGL surfaceless): a valid PNG,
- * the light where the segments project, a golden image, the timeline, and
+ * the light where the segments project, a golden image, the timeline, a
+ * marker where it projects, moved by a pose and changed by an update, and
  * bad input.
  *
  * The golden image: tests/gpu/golden/picture_tree.png. To regenerate it
  * after an intended change of the picture model, run
- *   FULGUR_REGEN_GOLDEN=1 build/tests/gpu/test_gpu_picture tests/gpu/golden
+ *   FULGUR_REGEN_GOLDEN=1 BUILD/tests/gpu/test_gpu_picture tests/gpu/golden
  * from the source root, look at it, and commit it. */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */
 #include <dirent.h>
 #include <math.h>
-#include <png.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -24,6 +24,7 @@
 
 #include "fulgur/gpu.h"
 #include "fg_math.h"
+#include "picture_fixture.h"
 
 #define W 256
 #define H 160
@@ -107,11 +108,7 @@ static void add_tree(fixture *f, double start_s, double leader_s, const double *
 
 static uint8_t *draw_read(fixture *f, double t)
 {
-    uint8_t *rgba = malloc(4 * W * H);
-    assert_non_null(rgba);
-    assert_int_equal(fgg_picture_draw(f->pic, &f->cam, t), FG_OK);
-    assert_int_equal(fgg_picture_read_rgba8(f->pic, rgba), FG_OK);
-    return rgba;
+    return fixture_draw(f->pic, &f->cam, W, H, t);
 }
 
 static int lum(const uint8_t *px)
@@ -119,53 +116,9 @@ static int lum(const uint8_t *px)
     return px[0] + px[1] + px[2];
 }
 
-/* Reads an 8-bit RGBA PNG; NULL when it is not one. */
-static uint8_t *read_png(const char *path, int *w, int *h)
-{
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&img, path))
-        return NULL;
-    img.format = PNG_FORMAT_RGBA;
-    uint8_t *buf = malloc(PNG_IMAGE_SIZE(img));
-    if (!buf || !png_image_finish_read(&img, NULL, buf, 0, NULL)) {
-        free(buf);
-        png_image_free(&img);
-        return NULL;
-    }
-    *w = (int)img.width;
-    *h = (int)img.height;
-    return buf;
-}
-
-/* --- The camera math of picture_draw.c, in double, for projections. --- */
 static void project(const fgg_camera *c, const double p[3], double *px, double *py)
 {
-    double f[3], s[3], u[3], d[3];
-    for (int k = 0; k < 3; k++) {
-        f[k] = c->target_m[k] - c->eye_m[k];
-        d[k] = p[k] - c->eye_m[k];
-    }
-    double fl = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    for (int k = 0; k < 3; k++)
-        f[k] /= fl;
-    s[0] = f[1] * c->up[2] - f[2] * c->up[1];
-    s[1] = f[2] * c->up[0] - f[0] * c->up[2];
-    s[2] = f[0] * c->up[1] - f[1] * c->up[0];
-    double sl = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-    for (int k = 0; k < 3; k++)
-        s[k] /= sl;
-    u[0] = s[1] * f[2] - s[2] * f[1];
-    u[1] = s[2] * f[0] - s[0] * f[2];
-    u[2] = s[0] * f[1] - s[1] * f[0];
-    double x = s[0] * d[0] + s[1] * d[1] + s[2] * d[2];
-    double y = u[0] * d[0] + u[1] * d[1] + u[2] * d[2];
-    double z = f[0] * d[0] + f[1] * d[1] + f[2] * d[2];
-    double focal = 1 / tan(c->fov_y_deg * FG_PI / 360);
-    double ndc_x = focal * (double)H / W * x / z, ndc_y = focal * y / z;
-    *px = (ndc_x + 1) * 0.5 * W; /* pixel edges: the centre of pixel i is i + 0.5 */
-    *py = (1 - ndc_y) * 0.5 * H;
+    fixture_project(c, W, H, p, px, py, NULL);
 }
 
 static double dist_to_segment(double x, double y, double ax, double ay, double bx, double by)
@@ -204,7 +157,7 @@ static void png_is_valid_and_matches_the_frame(void **state)
     snprintf(path, sizeof path, "%s/frame.png", f->dir);
     assert_int_equal(fgg_picture_write_png(f->pic, path), FG_OK);
     int w = 0, h = 0;
-    uint8_t *png = read_png(path, &w, &h);
+    uint8_t *png = fixture_read_png(path, &w, &h);
     assert_non_null(png);
     assert_int_equal(w, W);
     assert_int_equal(h, H);
@@ -259,30 +212,7 @@ static void matches_the_golden_image(void **state)
     fixture *f = *state;
     add_tree(f, 1.0, 0.05, NULL, 0);
     uint8_t *rgba = draw_read(f, 1.0);
-    char path[512];
-    snprintf(path, sizeof path, "%s/picture_tree.png", golden_dir);
-    if (getenv("FULGUR_REGEN_GOLDEN")) {
-        assert_int_equal(fgg_picture_write_png(f->pic, path), FG_OK);
-        printf("wrote %s\n", path);
-    }
-    int w = 0, h = 0;
-    uint8_t *golden = read_png(path, &w, &h);
-    if (!golden)
-        fail_msg("cannot read the golden image %s", path);
-    assert_int_equal(w, W);
-    assert_int_equal(h, H);
-    double sum = 0;
-    int max = 0;
-    for (int i = 0; i < 4 * W * H; i++) {
-        int d = abs((int)rgba[i] - (int)golden[i]);
-        sum += d;
-        max = d > max ? d : max;
-    }
-    double mean = sum / (4.0 * W * H);
-    printf("golden: mean abs difference %.4f, max %d\n", mean, max);
-    assert_true(mean < 0.5);
-    assert_true(max <= 48);
-    free(golden);
+    fixture_golden(f->pic, rgba, W, H, golden_dir, "picture_tree.png");
     free(rgba);
 }
 
@@ -448,6 +378,163 @@ static void bad_input(void **state)
     assert_int_equal(rmdir(path), 0);
 }
 
+/* The colour of the marker's disc near (x, y): a pixel 3 px right of and
+ * below its centre, off the "+" and inside the rim. */
+static const uint8_t *disc_px(const uint8_t *rgba, double x, double y)
+{
+    int i = (int)floor(x) + 3, j = (int)floor(y) + 3;
+    assert_true(i >= 0 && i < W && j >= 0 && j < H);
+    return &rgba[4 * (j * W + i)];
+}
+
+/* A marker is drawn where its point projects, red for +; a pose moves it,
+ * an update turns it blue; bad drawables, poses and updates are refused
+ * and change nothing. */
+static void drawables_poses_and_bad_input(void **state)
+{
+    fixture *f = *state;
+    fgg_picture_remove(f->pic, 0);
+    const double at[3] = {f->nodes[5].x, f->nodes[5].y, f->nodes[5].z};
+    fgg_drawable m = {.kind = FGG_DRAWABLE_MARKER,
+                      .marker = {.position_m = {at[0], at[1], at[2]}, .sign = 1}};
+    uint32_t id = 0;
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &m, &id), FG_OK);
+    assert_true(id != 0);
+    double x, y;
+    project(&f->cam, at, &x, &y);
+    uint8_t *rgba = draw_read(f, 0);
+    const uint8_t *c = disc_px(rgba, x, y);
+    printf("the + marker at (%.1f, %.1f): %d %d %d\n", x, y, c[0], c[1], c[2]);
+    assert_true(c[0] > 150 && c[1] < 80 && c[2] < 80);
+    free(rgba);
+
+    /* moved 2 m along +x by a pose (rotated about z by 90 degrees: a point
+     * at the body origin does not care), then turned negative */
+    fgg_pose pose = {.position_m = {2, 0, 0}, .rotation = {0, -1, 0, 1, 0, 0, 0, 0, 1}};
+    assert_int_equal(fgg_picture_set_pose(f->pic, id, &pose), FG_OK);
+    const double moved[3] = {-at[1] + 2, at[0], at[2]};
+    double mx, my;
+    project(&f->cam, moved, &mx, &my);
+    rgba = draw_read(f, 0);
+    c = disc_px(rgba, mx, my);
+    assert_true(c[0] > 150 && c[1] < 80 && c[2] < 80);
+    assert_int_equal(lum(disc_px(rgba, x, y)), 0); /* not where it was */
+    free(rgba);
+    m.marker.sign = -1;
+    assert_int_equal(fgg_picture_update(f->pic, id, &m), FG_OK);
+    rgba = draw_read(f, 0);
+    c = disc_px(rgba, mx, my);
+    printf("the - marker moved to (%.1f, %.1f): %d %d %d\n", mx, my, c[0], c[1], c[2]);
+    assert_true(c[2] > 150 && c[0] < 80);
+    free(rgba);
+
+    /* bad drawables: nothing is added */
+    assert_int_equal(fgg_picture_add_drawable(NULL, &m, NULL), FG_ERR_NULL);
+    assert_int_equal(fgg_picture_add_drawable(f->pic, NULL, NULL), FG_ERR_NULL);
+    fgg_drawable d = {.kind = (fgg_drawable_kind)99};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_SPHERE, .sphere = {.radius_m = 0}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d.sphere = (fgg_sphere){.centre_m = {0, NAN, 0}, .radius_m = 1};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_NOT_FINITE);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_BOX, .box = {.min_m = {0, 0, 1}, .max_m = {1, 1, 0}}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_PLANE, .plane = {.half_size_m = 1}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_MARKER, .marker = {.sign = 2}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_VOLUME,
+                       .volume = {.radius_m = 1, .height_m = 2, .temperature_k = 500}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d.volume.temperature_k = 1500, d.volume.intensity = -1;
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_GROUND, .ground = {.height_m = 10, .cloud_base_m = 5}};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    /* bad updates and poses: nothing changes */
+    fgg_drawable sphere = {.kind = FGG_DRAWABLE_SPHERE, .sphere = {.radius_m = 1}};
+    assert_int_equal(fgg_picture_update(f->pic, id, &sphere), FG_ERR_ARGUMENT);
+    assert_int_equal(fgg_picture_update(f->pic, id + 1000, &m), FG_ERR_NOT_FOUND);
+    fgg_drawable bad_m = m;
+    bad_m.marker.position_m[0] = INFINITY;
+    assert_int_equal(fgg_picture_update(f->pic, id, &bad_m), FG_ERR_NOT_FINITE);
+    fgg_pose skew = {.rotation = {1, 0.1, 0, 0, 1, 0, 0, 0, 1}};
+    assert_int_equal(fgg_picture_set_pose(f->pic, id, &skew), FG_ERR_ARGUMENT);
+    fgg_pose mirror = {.rotation = {-1, 0, 0, 0, 1, 0, 0, 0, 1}};
+    assert_int_equal(fgg_picture_set_pose(f->pic, id, &mirror), FG_ERR_ARGUMENT);
+    fgg_pose far = {.position_m = {NAN, 0, 0}};
+    assert_int_equal(fgg_picture_set_pose(f->pic, id, &far), FG_ERR_NOT_FINITE);
+    assert_int_equal(fgg_picture_set_pose(f->pic, id + 1000, NULL), FG_ERR_NOT_FOUND);
+    rgba = draw_read(f, 0);
+    c = disc_px(rgba, mx, my);
+    assert_true(c[2] > 150 && c[0] < 80); /* still the blue marker where the pose put it */
+    free(rgba);
+    /* a second ground is refused */
+    d = (fgg_drawable){.kind = FGG_DRAWABLE_GROUND};
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_OK);
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &d, NULL), FG_ERR_ARGUMENT);
+    fgg_picture_remove(f->pic, 0);
+}
+
+/* The mean R, G, B over the 5 x 5 pixels around where p projects. */
+static void mean_rgb_at(const fixture *f, const uint8_t *rgba, const double p[3], double rgb[3])
+{
+    double x, y;
+    project(&f->cam, p, &x, &y);
+    int i0 = (int)floor(x) - 2, j0 = (int)floor(y) - 2;
+    assert_true(i0 >= 0 && i0 + 5 <= W && j0 >= 0 && j0 + 5 <= H);
+    rgb[0] = rgb[1] = rgb[2] = 0;
+    for (int j = j0; j < j0 + 5; j++)
+        for (int i = i0; i < i0 + 5; i++)
+            for (int c = 0; c < 3; c++)
+                rgb[c] += rgba[4 * (j * W + i) + c] / 25.0;
+}
+
+/* A flame (a volume) with a matte wall behind it, no discharge, no
+ * ambient: the flame glows warm (red over blue) where it stands and not
+ * far above it, and it lights the wall beside it; at intensity 0 (an
+ * update) both are dark. */
+static void a_flame_glows_and_lights_the_wall(void **state)
+{
+    fixture *f = *state;
+    fgg_picture_remove(f->pic, 0);
+    fgg_drawable flame = {.kind = FGG_DRAWABLE_VOLUME,
+                          .volume = {.base_m = {0.5, 0, 1}, .radius_m = 0.8, .height_m = 4,
+                                     .intensity = 1, .seed = 7}};
+    fgg_drawable wall = {.kind = FGG_DRAWABLE_BOX,
+                         .box = {.min_m = {-6, 1, -1}, .max_m = {7, 1.2, 11},
+                                 .surface = {.material = FGG_MATERIAL_MATTE}}};
+    uint32_t id;
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &wall, NULL), FG_OK);
+    assert_int_equal(fgg_picture_add_drawable(f->pic, &flame, &id), FG_OK);
+    assert_int_equal(fgg_picture_lit_count(f->pic, 0), 1);
+    const double in_flame[3] = {0.5, 0, 2.2}, above[3] = {0.5, 0, 9.5},
+                 beside[3] = {3.5, 1, 2.5};
+    double rgb_in[3], rgb_above[3], rgb_beside[3];
+    uint8_t *rgba = draw_read(f, 0);
+    mean_rgb_at(f, rgba, in_flame, rgb_in);
+    mean_rgb_at(f, rgba, above, rgb_above);
+    mean_rgb_at(f, rgba, beside, rgb_beside);
+    free(rgba);
+    printf("flame %.0f %.0f %.0f, above it %.0f %.0f %.0f, the wall beside it %.0f %.0f %.0f\n",
+           rgb_in[0], rgb_in[1], rgb_in[2], rgb_above[0], rgb_above[1], rgb_above[2],
+           rgb_beside[0], rgb_beside[1], rgb_beside[2]);
+    assert_true(rgb_in[0] > 120 && rgb_in[0] > rgb_in[2] + 30);
+    double lum_in = rgb_in[0] + rgb_in[1] + rgb_in[2];
+    assert_true(rgb_above[0] + rgb_above[1] + rgb_above[2] < 0.25 * lum_in);
+    assert_true(rgb_beside[0] > 8 && rgb_beside[0] >= rgb_beside[2]);
+
+    flame.volume.intensity = 0;
+    assert_int_equal(fgg_picture_update(f->pic, id, &flame), FG_OK);
+    assert_int_equal(fgg_picture_lit_count(f->pic, 0), 0);
+    rgba = draw_read(f, 0);
+    mean_rgb_at(f, rgba, in_flame, rgb_in);
+    mean_rgb_at(f, rgba, beside, rgb_beside);
+    free(rgba);
+    assert_true(rgb_in[0] + rgb_in[1] + rgb_in[2] < 3);
+    assert_true(rgb_beside[0] + rgb_beside[1] + rgb_beside[2] < 3);
+    fgg_picture_remove(f->pic, 0);
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1)
@@ -459,6 +546,8 @@ int main(int argc, char **argv)
         cmocka_unit_test(timeline),
         cmocka_unit_test(leader_grows_from_the_root),
         cmocka_unit_test(bad_input),
+        cmocka_unit_test(drawables_poses_and_bad_input),
+        cmocka_unit_test(a_flame_glows_and_lights_the_wall),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -18,8 +18,8 @@
  *
  * The discretisation is the finite-volume 7-point Laplacian (each edge
  * weighted by its dual face area over its length), which is symmetric, so
- * the solver can be conjugate gradient. Sizes of the form 2^k + 1 (33, 65,
- * 129, 257) give the multigrid its full hierarchy.
+ * the solver can fall back on conjugate gradient. Sizes of the form
+ * 2^k + 1 (33, 65, 129, 257) give the multigrid its full hierarchy.
  */
 #ifndef FULGUR_FIELD_H
 #define FULGUR_FIELD_H
@@ -34,7 +34,7 @@
 #define FG_FIELD_MAX_SIZE 257
 #define FG_FIELD_DEFAULT_SIZE 65
 #define FG_FIELD_MAX_SHAPES 64
-/* The default refusal limit: a 257^3 grid needs about 0.76 GiB. */
+/* The default refusal limit: a 257^3 grid needs about 0.6 GiB. */
 #define FG_FIELD_DEFAULT_MAX_BYTES ((size_t)1 << 30)
 
 typedef struct fg_field fg_field;
@@ -110,22 +110,26 @@ FG_API FG_NODISCARD fg_result fg_field_set_shapes(fg_field *field, const fg_shap
                                                   size_t count, size_t *bad_shape);
 
 typedef enum fg_solver {
-    FG_SOLVER_MGPCG = 0, /* multigrid-preconditioned conjugate gradient */
-    FG_SOLVER_SOR        /* red-black successive over-relaxation (the oracle) */
+    FG_SOLVER_MULTIGRID = 0, /* multigrid V-cycles while each divides the residual by
+                                3 or more, then multigrid-preconditioned conjugate
+                                gradient (MGPCG) */
+    FG_SOLVER_SOR            /* red-black successive over-relaxation (the oracle) */
 } fg_solver;
 
 typedef struct fg_solve_config {
     fg_solver solver;
     double tolerance;     /* relative residual to reach; 0 means 1e-5 */
-    int max_iterations;   /* 0 means 200 (MGPCG) or 100000 sweeps (SOR) */
+    int max_iterations;   /* 0 means 200 (multigrid) or 100000 sweeps (SOR) */
     double sor_omega;     /* SOR only, in (0, 2); 0 means 2 / (1 + sin(pi / (n - 1))) */
     int cold;             /* nonzero: start from phi = 0 on free nodes, not the last solution */
 } fg_solve_config;
 
 typedef struct fg_solve_report {
-    int iterations;       /* CG iterations, or SOR sweeps */
+    int iterations;       /* V-cycles and CG iterations (each runs one cycle), or SOR sweeps */
     double residual;      /* final ||b - A phi|| / ||b|| over the free nodes */
     double initial_residual;
+    int cg_iterations;    /* of iterations, those of conjugate gradient (0: the cycles
+                             alone converged) */
 } fg_solve_report;
 
 /* Solves Laplace's equation for phi on the free nodes, starting from the

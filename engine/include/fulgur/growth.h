@@ -31,8 +31,8 @@
  * nodes held at phi = 0; every step adds one free node that touches the
  * channel (26-neighbourhood), with probability phi^eta / sum phi^eta over
  * all of them, and updates the field: Gauss-Seidel sweeps in a box around
- * the new node every step, a two-iteration warm MGPCG cycle every
- * dbm_global_every steps, and a full solve (to 1e-5) whenever a cycle ends
+ * the new node every step, two warm multigrid iterations (fg_field_solve)
+ * every dbm_global_every steps, and a full solve (to 1e-5) whenever a cycle ends
  * with a larger residual than the cycle before it. The lattice path is then resampled so that segments are
  * about step_m long (branch points and ends kept).
  */

@@ -260,7 +260,7 @@ fg_result fg_field_classify(const fg_field *f, const double *pts, size_t n, uint
 
 void fg_field_labels_changed(fg_field *f)
 {
-    f->masks_dirty = 1;
+    f->operators_dirty = 1;
     f->b_norm = -1.0;
     f->sites_valid = 0;
 }

@@ -24,8 +24,9 @@ size_t fg_field_memory_bytes(const fg_grid_config *config)
     if (!sizes(config, n))
         return 0;
     size_t count = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
-    /* phi, r, z, p, q and the labels */
-    return count * (5 * sizeof(double) + 1) + fg_multigrid_bytes(n) + sizeof(fg_field);
+    /* phi, the labels, and the float x, r, z, p, q */
+    return count * (sizeof(double) + 1 + 5 * sizeof(float)) + fg_multigrid_bytes(n) +
+           sizeof(fg_field);
 }
 
 fg_result fg_field_create(const fg_grid_config *config, fg_field **out)
@@ -56,13 +57,14 @@ fg_result fg_field_create(const fg_grid_config *config, fg_field **out)
     }
     size_t count = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
     f->phi = calloc(count, sizeof(double));
-    f->r = calloc(count, sizeof(double));
-    f->z = calloc(count, sizeof(double));
-    f->p = calloc(count, sizeof(double));
-    f->q = calloc(count, sizeof(double));
+    f->x = calloc(count, sizeof(float));
+    f->r = calloc(count, sizeof(float));
+    f->z = calloc(count, sizeof(float));
+    f->p = calloc(count, sizeof(float));
+    f->q = calloc(count, sizeof(float));
     f->label = calloc(count, 1);
     f->b_norm = -1.0;
-    if (!f->phi || !f->r || !f->z || !f->p || !f->q || !f->label ||
+    if (!f->phi || !f->x || !f->r || !f->z || !f->p || !f->q || !f->label ||
         fg_multigrid_init(f) != FG_OK) {
         fg_field_destroy(f);
         return FG_ERR_NO_MEMORY;
@@ -77,6 +79,7 @@ void fg_field_destroy(fg_field *f)
         return;
     fg_multigrid_deinit(f);
     free(f->phi);
+    free(f->x);
     free(f->r);
     free(f->z);
     free(f->p);

@@ -1,139 +1,156 @@
-/* The finite-volume 7-point Laplacian and its Gauss-Seidel relaxation.
+/* The finite-volume 7-point Laplacian on level 0, in double, for phi: the
+ * residual that decides convergence, red-black SOR (the oracle) and DBM's
+ * local relaxation.
  *
  * (A x)_i = sum_j c_ij (x_i - x_j) over the face neighbours j inside the box.
  * An edge lying on a box face has half the dual-face area of an interior one
  * (a quarter on an edge of the box): that is what makes the box faces
- * Neumann and keeps A symmetric. Masked (Dirichlet) neighbours contribute
- * their value in x: phi for the potential, 0 for a correction. */
+ * Neumann and keeps A symmetric. The kernels run it in the mirror form of
+ * fg_level_row. Masked (Dirichlet) nodes hold their value in phi. */
 #include "field_internal.h"
+#include "field_simd.h"
 
-static inline double face(int i, int n)
+/* x at the two x-neighbours of node i of a row, mirrored at the ends. */
+static inline double west(const double *x, int i)
 {
-    return (i == 0 || i == n - 1) ? 0.5 : 1.0;
+    return i > 0 ? x[i - 1] : x[1];
 }
 
-/* diag = sum_j c_ij, off = sum_j c_ij x_j, for a node anywhere in the box. */
-static void node_sums(const fg_level *L, const double *x, int i, int j, int k, double *diag,
-                      double *off)
+static inline double east(const double *x, int i, int n)
 {
-    const int *n = L->n;
-    size_t id = fg_level_index(L, i, j, k);
-    size_t sy = (size_t)n[0], sz = (size_t)n[0] * (size_t)n[1];
-    double fx = face(i, n[0]), fy = face(j, n[1]), fz = face(k, n[2]);
-    double cx = L->c[0] * fy * fz, cy = L->c[1] * fx * fz, cz = L->c[2] * fx * fy;
-    double d = 0.0, o = 0.0;
-    if (i > 0) { d += cx; o += cx * x[id - 1]; }
-    if (i < n[0] - 1) { d += cx; o += cx * x[id + 1]; }
-    if (j > 0) { d += cy; o += cy * x[id - sy]; }
-    if (j < n[1] - 1) { d += cy; o += cy * x[id + sy]; }
-    if (k > 0) { d += cz; o += cz * x[id - sz]; }
-    if (k < n[2] - 1) { d += cz; o += cz * x[id + sz]; }
-    *diag = d;
-    *off = o;
+    return i < n - 1 ? x[i + 1] : x[n - 2];
 }
 
-static inline int boundary_row(const fg_level *L, int j, int k)
+/* The mirror-form sum of the neighbours, sum_j c_ij x_j, at node i of row r. */
+static inline double neighbours(const fg_level *L, const double *xr, const fg_row *r, int i)
 {
-    return j == 0 || k == 0 || j == L->n[1] - 1 || k == L->n[2] - 1;
+    return L->c[0] * (west(xr, i) + east(xr, i, L->n[0])) +
+           L->c[1] * (xr[r->south + i] + xr[r->north + i]) +
+           L->c[2] * (xr[r->down + i] + xr[r->up + i]);
 }
 
-static inline void residual_at(const fg_level *L, const double *x, const double *rhs,
-                               double *out, int i, int j, int k)
+static inline double end_scale(const fg_level *L, int i)
 {
-    size_t id = fg_level_index(L, i, j, k);
-    double d, o;
-    node_sums(L, x, i, j, k, &d, &o);
-    out[id] = L->mask[id] ? 0.0 : (rhs ? rhs[id] : 0.0) - (d * x[id] - o);
+    return i == 0 || i == L->n[0] - 1 ? 0.5 : 1.0;
 }
 
-void fg_lap_residual(const fg_level *L, const double *x, const double *rhs, double *out)
+/* The finite-volume residual -A x at node i of row r (free or not). */
+static inline double residual_at(const fg_level *L, const double *xr, const fg_row *r, int i,
+                                 double dg)
 {
-    const int *n = L->n;
-    size_t sy = (size_t)n[0], sz = (size_t)n[0] * (size_t)n[1];
-    double cx = L->c[0], cy = L->c[1], cz = L->c[2], dg = 2.0 * (cx + cy + cz);
-    for (int k = 0; k < n[2]; k++)
-        for (int j = 0; j < n[1]; j++) {
-            if (boundary_row(L, j, k)) {
-                for (int i = 0; i < n[0]; i++)
-                    residual_at(L, x, rhs, out, i, j, k);
-                continue;
-            }
-            residual_at(L, x, rhs, out, 0, j, k);
-            residual_at(L, x, rhs, out, n[0] - 1, j, k);
-            size_t row = fg_level_index(L, 0, j, k);
-            const double *xr = x + row;
-            const uint8_t *m = L->mask + row;
-            double *o = out + row;
-            /* Two copies of the loop so that neither tests rhs per node. */
-            if (rhs) {
-                const double *b = rhs + row;
-                for (int i = 1; i < n[0] - 1; i++) {
-                    double v = b[i] - (dg * xr[i] - cx * (xr[i - 1] + xr[i + 1]) -
-                                       cy * (xr[i - sy] + xr[i + sy]) -
-                                       cz * (xr[i - sz] + xr[i + sz]));
-                    o[i] = m[i] ? 0.0 : v;
-                }
-            } else {
-                for (int i = 1; i < n[0] - 1; i++) {
-                    double v = -(dg * xr[i] - cx * (xr[i - 1] + xr[i + 1]) -
-                                 cy * (xr[i - sy] + xr[i + sy]) -
-                                 cz * (xr[i - sz] + xr[i + sz]));
-                    o[i] = m[i] ? 0.0 : v;
-                }
-            }
+    return (neighbours(L, xr, r, i) - dg * xr[i]) * (r->scale * end_scale(L, i));
+}
+
+/* Nodes [i0, i1) of a row of fg_lap_residual, one at a time. */
+static double scalar_residuals(const fg_level *L, const double *xr, const fg_row *r, int i0,
+                               int i1, double dg, float *out)
+{
+    double sum = 0.0;
+    for (int i = i0; i < i1; i++) {
+        double v = L->mask[r->at + (size_t)i] ? 0.0 : residual_at(L, xr, r, i, dg);
+        sum += v * v;
+        if (out)
+            out[r->at + fg_split(L->n[0], i)] = (float)v;
+    }
+    return sum;
+}
+
+/* One row of fg_lap_residual with phi as it is; returns the squared norm. */
+static double residual_row(const fg_level *L, const double *x, const fg_row *r, float *out)
+{
+    const int n = L->n[0];
+    const double *xr = x + r->at;
+    const double *xs = xr + r->south, *xn = xr + r->north, *xd = xr + r->down,
+                 *xu = xr + r->up;
+    const uint8_t *m = L->mask + r->at;
+    const double dg = 2.0 * (L->c[0] + L->c[1] + L->c[2]);
+    const fg_vd cx = fg_vd_set(L->c[0]), cy = fg_vd_set(L->c[1]), cz = fg_vd_set(L->c[2]),
+                vdg = fg_vd_set(dg), scale = fg_vd_set(r->scale), zero = fg_vd_set(0.0);
+    fg_vd acc = zero;
+    int i = 1;
+    for (; i + FG_VD_LANES <= n - 1; i += FG_VD_LANES) {
+        fg_vd v = cx * (fg_vd_load(xr + i - 1) + fg_vd_load(xr + i + 1)) +
+                  cy * (fg_vd_load(xs + i) + fg_vd_load(xn + i)) +
+                  cz * (fg_vd_load(xd + i) + fg_vd_load(xu + i)) - vdg * fg_vd_load(xr + i);
+        v = fg_vd_select(fg_vl_zero_bytes(m + i), v * scale, zero);
+        acc += v * v;
+        if (out)
+            for (int l = 0; l < FG_VD_LANES; l++)
+                out[r->at + fg_split(n, i + l)] = (float)fg_vd_lane(v, l);
+    }
+    double sum = 0.0;
+    for (int l = 0; l < FG_VD_LANES; l++)
+        sum += fg_vd_lane(acc, l);
+    sum += scalar_residuals(L, xr, r, 0, 1, dg, out);
+    sum += scalar_residuals(L, xr, r, i, n - 1, dg, out);
+    sum += scalar_residuals(L, xr, r, n - 1, n, dg, out);
+    return sum;
+}
+
+/* One row with phi read as 0 on free nodes: the residual is b. */
+static double b_row(const fg_level *L, const double *x, const fg_row *r)
+{
+    const int n = L->n[0];
+    const uint8_t *m = L->mask + r->at;
+    const ptrdiff_t off[4] = {r->south, r->north, r->down, r->up};
+    double sum = 0.0;
+    for (int i = 0; i < n; i++) {
+        if (m[i])
+            continue;
+        int w = i > 0 ? i - 1 : 1, e = i < n - 1 ? i + 1 : n - 2;
+        double v = L->c[0] * ((m[w] ? x[r->at + (size_t)w] : 0.0) +
+                              (m[e] ? x[r->at + (size_t)e] : 0.0));
+        for (int a = 0; a < 4; a++) {
+            size_t q = (size_t)((ptrdiff_t)(r->at + (size_t)i) + off[a]);
+            v += L->c[1 + a / 2] * (L->mask[q] ? x[q] : 0.0);
         }
+        v *= r->scale * end_scale(L, i);
+        sum += v * v;
+    }
+    return sum;
 }
 
-static inline void relax(const fg_level *L, double *x, const double *rhs, int i, int j, int k,
-                         double omega)
+double fg_lap_residual(const fg_level *L, const double *phi, int zero_free, float *out)
 {
-    size_t id = fg_level_index(L, i, j, k);
-    if (L->mask[id])
-        return;
-    double d, o;
-    node_sums(L, x, i, j, k, &d, &o);
-    x[id] += omega * (((rhs ? rhs[id] : 0.0) + o) / d - x[id]);
+    double sum = 0.0;
+    for (int k = 0; k < L->n[2]; k++)
+        for (int j = 0; j < L->n[1]; j++) {
+            fg_row r = fg_level_row(L, j, k);
+            sum += zero_free ? b_row(L, phi, &r) : residual_row(L, phi, &r, out);
+        }
+    return sum;
 }
 
-void fg_lap_sweep(const fg_level *L, double *x, const double *rhs, int color, double omega)
+/* Over-relaxed Gauss-Seidel at free node i of row r. */
+static inline void relax_at(const fg_level *L, double *xr, const fg_row *r, int i, double omega,
+                            double dg)
 {
-    const int *n = L->n;
-    size_t sy = (size_t)n[0], sz = (size_t)n[0] * (size_t)n[1];
-    double cx = L->c[0], cy = L->c[1], cz = L->c[2];
-    double inv = omega / (2.0 * (cx + cy + cz));
-    for (int k = 0; k < n[2]; k++)
-        for (int j = 0; j < n[1]; j++) {
+    if (!L->mask[r->at + (size_t)i])
+        xr[i] += omega * (neighbours(L, xr, r, i) / dg - xr[i]);
+}
+
+void fg_lap_sweep(const fg_level *L, double *x, int color, double omega)
+{
+    const int n = L->n[0];
+    const double cx = L->c[0], cy = L->c[1], cz = L->c[2], dg = 2.0 * (cx + cy + cz);
+    const double inv = omega / dg;
+    for (int k = 0; k < L->n[2]; k++)
+        for (int j = 0; j < L->n[1]; j++) {
+            fg_row r = fg_level_row(L, j, k);
+            double *xr = x + r.at;
+            const double *xs = xr + r.south, *xn = xr + r.north, *xd = xr + r.down,
+                         *xu = xr + r.up;
+            const uint8_t *m = L->mask + r.at;
             int i0 = (color + j + k) & 1;
-            if (boundary_row(L, j, k)) {
-                for (int i = i0; i < n[0]; i += 2)
-                    relax(L, x, rhs, i, j, k, omega);
-                continue;
-            }
             if (i0 == 0)
-                relax(L, x, rhs, 0, j, k, omega);
-            size_t row = fg_level_index(L, 0, j, k);
-            int last = n[0] - 1;
-            double *xr = x + row;
-            const uint8_t *m = L->mask + row;
-            /* Two copies of the loop so that neither tests rhs per node. */
-            if (rhs) {
-                const double *b = rhs + row;
-                for (int i = i0 == 0 ? 2 : 1; i < last; i += 2)
-                    if (!m[i])
-                        xr[i] += inv * (b[i] + cx * (xr[i - 1] + xr[i + 1]) +
-                                        cy * (xr[i - sy] + xr[i + sy]) +
-                                        cz * (xr[i - sz] + xr[i + sz])) -
-                                 omega * xr[i];
-            } else {
-                for (int i = i0 == 0 ? 2 : 1; i < last; i += 2)
-                    if (!m[i])
-                        xr[i] += inv * (cx * (xr[i - 1] + xr[i + 1]) +
-                                        cy * (xr[i - sy] + xr[i + sy]) +
-                                        cz * (xr[i - sz] + xr[i + sz])) -
-                                 omega * xr[i];
-            }
-            if (((last + j + k) & 1) == color)
-                relax(L, x, rhs, last, j, k, omega);
+                relax_at(L, xr, &r, 0, omega, dg);
+            for (int i = i0 == 0 ? 2 : 1; i < n - 1; i += 2)
+                if (!m[i])
+                    xr[i] += inv * (cx * (xr[i - 1] + xr[i + 1]) + cy * (xs[i] + xn[i]) +
+                                    cz * (xd[i] + xu[i])) -
+                             omega * xr[i];
+            if (((n - 1 + j + k) & 1) == color)
+                relax_at(L, xr, &r, n - 1, omega, dg);
         }
 }
 
@@ -151,18 +168,13 @@ void fg_lap_relax_box(const fg_level *L, double *x, int ci, int cj, int ck, int 
         lo[a] = clampi(lo[a], 0, L->n[a] - 1);
         hi[a] = clampi(hi[a], 0, L->n[a] - 1);
     }
+    const double dg = 2.0 * (L->c[0] + L->c[1] + L->c[2]);
     for (int s = 0; s < sweeps; s++)
         for (int color = 0; color < 2; color++)
             for (int k = lo[2]; k <= hi[2]; k++)
-                for (int j = lo[1]; j <= hi[1]; j++)
+                for (int j = lo[1]; j <= hi[1]; j++) {
+                    fg_row r = fg_level_row(L, j, k);
                     for (int i = lo[0] + ((lo[0] + j + k + color) & 1); i <= hi[0]; i += 2)
-                        relax(L, x, NULL, i, j, k, 1.0);
-}
-
-double fg_dot(const double *a, const double *b, size_t n)
-{
-    double s = 0.0;
-    for (size_t i = 0; i < n; i++)
-        s += a[i] * b[i];
-    return s;
+                        relax_at(L, x + r.at, &r, i, 1.0, dg);
+                }
 }

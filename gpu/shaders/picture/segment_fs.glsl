@@ -1,14 +1,15 @@
 #version 430 core
-// The glow across one segment: a white-hot core inside a bluish halo,
-// functions of the distance to the segment in half-widths.
+// The glow across one segment: a white-hot core, tinted by the halo's
+// colour (a glow discharge's more than a spark's), inside the coloured halo (the flash's: nitrogen's violet-blue by
+// default), functions of the distance to the segment in half-widths.
 in vec2 v_local;
 flat in float v_length;
 flat in float v_gain;
 flat in float v_end_cap;
+flat in vec3 v_halo;
+flat in float v_core_tint; // how much of the halo's colour the core keeps
 out vec4 o_color;
 
-const vec3 CORE = vec3(1.0, 1.0, 1.0);
-const vec3 HALO = vec3(0.55, 0.65, 1.0);
 
 void main()
 {
@@ -18,5 +19,5 @@ void main()
         discard;
     float core = exp(-d * d / (2.0 * 0.18 * 0.18));
     float halo = 0.35 * (1.0 - d) * (1.0 - d);
-    o_color = vec4(v_gain * (core * CORE + halo * HALO), 1.0);
+    o_color = vec4(v_gain * (core * mix(vec3(1.0), v_halo, v_core_tint) + halo * v_halo), 1.0);
 }

@@ -13,6 +13,7 @@ struct segment {
 struct flash_state {
     vec4 origin; // flash origin relative to the eye, world axes (m)
     vec4 gains;  // leader front (m, negative: none), leader gain, all gain, main gain
+    vec4 colour; // the halo's linear RGB, the core's tint
 };
 layout(std430, binding = 0) readonly buffer segments { segment seg[]; };
 layout(std430, binding = 1) readonly buffer flashes { flash_state fl[]; };
@@ -21,11 +22,14 @@ uniform mat3 u_view;      // world -> view rotation
 uniform mat4 u_proj;
 uniform float u_focal_px; // pixels per unit of x/z at the image centre
 uniform float u_min_px;   // narrowest half-width drawn, pixels
+uniform vec2 u_cloud;     // a cloud base's z relative to the eye (1e30: none), fade (m)
 
 out vec2 v_local;        // (along, across) in half-widths
 flat out float v_length; // segment length in half-widths
 flat out float v_gain;
 flat out float v_end_cap;
+flat out vec3 v_halo;
+flat out float v_core_tint;
 
 void main()
 {
@@ -49,6 +53,10 @@ void main()
             }
         }
     }
+    // channel inside a cloud is hidden by it, fading over the first metres
+    float above = 0.5 * (p0.z + p1.z) + f.origin.z - u_cloud.x;
+    if (above > 0.0)
+        gain *= exp(-above / u_cloud.y);
     vec3 q0 = u_view * (f.origin.xyz + p0);
     vec3 q1 = u_view * (f.origin.xyz + p1);
     vec3 d = q1 - q0;
@@ -75,5 +83,7 @@ void main()
     v_length = len / w;
     v_gain = gain;
     v_end_cap = end_cap;
+    v_halo = f.colour.rgb;
+    v_core_tint = f.colour.a;
     gl_Position = gain > 0.0 ? u_proj * vec4(p, 1.0) : vec4(2.0, 2.0, 2.0, 1.0);
 }

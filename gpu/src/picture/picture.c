@@ -1,5 +1,6 @@
-/* The picture object: its programs and render targets, and the flashes it
- * shows (their segments are uploaded lazily, at the next draw). */
+/* The picture object: its programs and render targets, the discharges it
+ * shows (their segments are uploaded lazily, at the next draw), adding any
+ * drawable and removing them. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,12 +51,49 @@ static fg_result make_programs(fgg_picture *p)
     if (r == FG_OK)
         r = fgg_program_graphics("picture_composite", fgg_shader_picture_quad_vs,
                                  fgg_shader_picture_composite_fs, &p->prog_composite);
+    if (r == FG_OK)
+        r = fgg_program_graphics("picture_sky", fgg_shader_picture_quad_vs,
+                                 fgg_shader_picture_sky_fs, &p->prog_sky);
+    if (r == FG_OK)
+        r = fgg_program_graphics("picture_round", fgg_shader_picture_round_vs,
+                                 fgg_shader_picture_round_fs, &p->prog_round);
+    if (r == FG_OK)
+        r = fgg_program_graphics("picture_box", fgg_shader_picture_box_vs,
+                                 fgg_shader_picture_box_fs, &p->prog_box);
+    if (r == FG_OK)
+        r = fgg_program_graphics("picture_volume", fgg_shader_picture_box_vs,
+                                 fgg_shader_picture_volume_fs, &p->prog_volume);
+    if (r == FG_OK)
+        r = fgg_program_graphics("picture_marker", fgg_shader_picture_marker_vs,
+                                 fgg_shader_picture_marker_fs, &p->prog_marker);
+    if (r == FG_OK)
+        r = fgg_program_graphics("picture_overlay", fgg_shader_picture_overlay_vs,
+                                 fgg_shader_picture_overlay_fs, &p->prog_overlay);
     return r;
+}
+
+/* The float target's depth: objects hide what is behind them. */
+static fg_result add_depth(fgg_picture *p)
+{
+    glGenRenderbuffers(1, &p->depth_rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, p->depth_rb);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, p->width, p->height);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, p->hdr_fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, p->depth_rb);
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return fgg_fail(FG_ERR_GPU, "picture: the %d x %d target with depth is incomplete (0x%x)",
+                        p->width, p->height, (unsigned)status);
+    return FG_OK;
 }
 
 static fg_result make_targets(fgg_picture *p)
 {
     fg_result r = make_target(GL_RGBA16F, p->width, p->height, &p->hdr_tex, &p->hdr_fbo);
+    if (r == FG_OK)
+        r = add_depth(p);
     if (r == FG_OK)
         r = make_target(GL_RGBA8, p->width, p->height, &p->ldr_tex, &p->ldr_fbo);
     int w = p->width, h = p->height;
@@ -89,11 +127,16 @@ fg_result fgg_picture_create(fgg_context *context, const fgg_picture_config *con
         return fgg_fail(FG_ERR_ARGUMENT,
                         "fgg_picture_create: exposure %g must be finite and >= 0, bloom %g "
                         "finite", c.exposure, c.bloom);
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 3; k++) {
         if (!isfinite(c.background[k]) || c.background[k] < 0)
             return fgg_fail(FG_ERR_ARGUMENT,
                             "fgg_picture_create: background[%d] = %g is not a finite value >= 0",
                             k, (double)c.background[k]);
+        if (!isfinite(c.ambient[k]) || c.ambient[k] < 0)
+            return fgg_fail(FG_ERR_ARGUMENT,
+                            "fgg_picture_create: ambient[%d] = %g is not a finite value >= 0", k,
+                            (double)c.ambient[k]);
+    }
     fgg_picture *p = calloc(1, sizeof *p);
     if (!p)
         return fgg_fail(FG_ERR_NO_MEMORY, "fgg_picture_create: no memory");
@@ -103,13 +146,17 @@ fg_result fgg_picture_create(fgg_context *context, const fgg_picture_config *con
     p->exposure = (float)(c.exposure == 0 ? 1 : c.exposure);
     p->bloom = (float)(c.bloom == 0 ? DEFAULT_BLOOM : c.bloom < 0 ? 0 : c.bloom);
     memcpy(p->background, c.background, sizeof p->background);
+    memcpy(p->ambient, c.ambient, sizeof p->ambient);
     p->next_id = 1;
     glGetError(); /* an earlier caller's error is not ours */
     glGenVertexArrays(1, &p->vao);
     glGenBuffers(1, &p->segment_buf);
     glGenBuffers(1, &p->flash_buf);
+    glGenBuffers(1, &p->object_buf);
+    glGenTextures(1, &p->overlay_tex);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, p->flash_buf);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, FGG_PICTURE_MAX_FLASHES * 8 * sizeof(float), NULL,
+    glBufferData(GL_SHADER_STORAGE_BUFFER,
+                 FGG_PICTURE_MAX_FLASHES * FGG_FLASH_FLOATS * sizeof(float), NULL,
                  GL_DYNAMIC_DRAW);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     fg_result r = make_programs(p);
@@ -141,11 +188,15 @@ void fgg_picture_destroy(fgg_picture *p)
     for (size_t i = 0; i < p->flash_count; i++)
         free_flash(&p->flashes[i]);
     free(p->flashes);
-    glDeleteProgram(p->prog_segment);
-    glDeleteProgram(p->prog_bright);
-    glDeleteProgram(p->prog_down);
-    glDeleteProgram(p->prog_up);
-    glDeleteProgram(p->prog_composite);
+    free(p->objects);
+    free(p->object_floats);
+    const GLuint programs[] = {p->prog_segment, p->prog_bright, p->prog_down,
+                               p->prog_up,      p->prog_composite, p->prog_sky,
+                               p->prog_round,   p->prog_box,    p->prog_volume,
+                               p->prog_marker,  p->prog_overlay};
+    for (size_t i = 0; i < sizeof programs / sizeof programs[0]; i++)
+        glDeleteProgram(programs[i]);
+    glDeleteRenderbuffers(1, &p->depth_rb);
     glDeleteFramebuffers(1, &p->hdr_fbo);
     glDeleteFramebuffers(1, &p->ldr_fbo);
     glDeleteTextures(1, &p->hdr_tex);
@@ -156,6 +207,8 @@ void fgg_picture_destroy(fgg_picture *p)
     }
     glDeleteBuffers(1, &p->segment_buf);
     glDeleteBuffers(1, &p->flash_buf);
+    glDeleteBuffers(1, &p->object_buf);
+    glDeleteTextures(1, &p->overlay_tex);
     glDeleteVertexArrays(1, &p->vao);
     free(p);
 }
@@ -186,6 +239,17 @@ static fg_result check_times(const fgg_flash *f)
     return FG_OK;
 }
 
+static fg_result check_colour(const float *colour, const char *who)
+{
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(colour[k]) || colour[k] < 0)
+            return fgg_fail(isfinite(colour[k]) ? FG_ERR_ARGUMENT : FG_ERR_NOT_FINITE,
+                            "%s: colour[%d] = %g is not a finite value >= 0", who, k,
+                            (double)colour[k]);
+    return FG_OK;
+}
+
+
 fg_result fgg_picture_add(fgg_picture *p, const fgg_flash *flash, uint32_t *id)
 {
     if (!p || !flash || !flash->nodes)
@@ -198,6 +262,8 @@ fg_result fgg_picture_add(fgg_picture *p, const fgg_flash *flash, uint32_t *id)
         return fgg_fail(FG_ERR_TREE, "fgg_picture_add: the tree is invalid: %s", why);
     }
     fg_result r = check_times(flash);
+    if (r == FG_OK)
+        r = check_colour(flash->colour, "fgg_picture_add");
     if (r != FG_OK)
         return r;
     if (p->flash_count == FGG_PICTURE_MAX_FLASHES)
@@ -214,7 +280,8 @@ fg_result fgg_picture_add(fgg_picture *p, const fgg_flash *flash, uint32_t *id)
         free(rec.strokes_s);
         return fgg_fail(FG_ERR_NO_MEMORY, "fgg_picture_add: no memory");
     }
-    r = fgg_picture_tree_segments(flash->nodes, flash->node_count, flash->radius_m, &rec);
+    r = fgg_picture_tree_segments(flash->nodes, flash->node_count, flash->radius_m,
+                                  flash->continuous != 0, &rec);
     if (r != FG_OK) {
         free(rec.strokes_s);
         return r;
@@ -226,9 +293,11 @@ fg_result fgg_picture_add(fgg_picture *p, const fgg_flash *flash, uint32_t *id)
     rec.leader_s = flash->leader_s;
     rec.continuous = flash->continuous != 0;
     rec.duration_s = flash->duration_s;
-    rec.id = p->next_id++;
-    if (p->next_id == 0)
-        p->next_id = 1;
+    /* the violet-blue of the nitrogen lines that dominate air's spectrum */
+    const float nitrogen[3] = {0.55f, 0.65f, 1.0f};
+    int given = flash->colour[0] > 0 || flash->colour[1] > 0 || flash->colour[2] > 0;
+    memcpy(rec.colour, given ? flash->colour : nitrogen, sizeof rec.colour);
+    rec.id = fgg_picture_next_id(p);
     p->flashes[p->flash_count++] = rec;
     p->segments_dirty = 1;
     if (id)
@@ -236,9 +305,22 @@ fg_result fgg_picture_add(fgg_picture *p, const fgg_flash *flash, uint32_t *id)
     return FG_OK;
 }
 
+fg_result fgg_picture_add_drawable(fgg_picture *p, const fgg_drawable *d, uint32_t *id)
+{
+    if (!p || !d)
+        return fgg_fail(FG_ERR_NULL, "fgg_picture_add_drawable: %s is NULL",
+                        !p ? "picture" : "drawable");
+    if (d->kind == FGG_DRAWABLE_DISCHARGE)
+        return fgg_picture_add(p, &d->discharge, id);
+    fg_result r = fgg_picture_check_object(p, d, "fgg_picture_add_drawable");
+    return r != FG_OK ? r : fgg_picture_add_object(p, d, id);
+}
+
 void fgg_picture_remove(fgg_picture *p, uint32_t id)
 {
     if (!p)
+        return;
+    if (fgg_picture_remove_objects(p, id) > 0 && id != 0)
         return;
     size_t kept = 0;
     for (size_t i = 0; i < p->flash_count; i++) {

@@ -13,20 +13,26 @@
 #include "picture_internal.h"
 
 /* Half-width radius * 0.6^depth, brightness 0.4^depth: branches are
- * thinner and dimmer than the channel they leave (the current divides). */
+ * thinner and dimmer than the channel they leave (the current divides).
+ * A glow discharge (a plasma ball's filaments, continuous) carries current
+ * in every filament that reaches the glass: 0.8^depth and 0.7^depth. */
 #define LEVEL_WIDTH_RATIO 0.6
 #define LEVEL_BRIGHTNESS_RATIO 0.4
-/* The default main-channel half-width, a fraction of the extent. */
+#define GLOW_WIDTH_RATIO 0.8
+#define GLOW_BRIGHTNESS_RATIO 0.7
+/* The default main-channel half-width, a fraction of the extent: a glow
+ * discharge's filaments are diffuse, wider. */
 #define DEFAULT_RADIUS_FRACTION 0.01
+#define GLOW_RADIUS_FRACTION 0.02
 
-double fgg_picture_level_width(int depth)
+double fgg_picture_level_width(int depth, int continuous)
 {
-    return pow(LEVEL_WIDTH_RATIO, depth);
+    return pow(continuous ? GLOW_WIDTH_RATIO : LEVEL_WIDTH_RATIO, depth);
 }
 
-double fgg_picture_level_brightness(int depth)
+double fgg_picture_level_brightness(int depth, int continuous)
 {
-    return pow(LEVEL_BRIGHTNESS_RATIO, depth);
+    return pow(continuous ? GLOW_BRIGHTNESS_RATIO : LEVEL_BRIGHTNESS_RATIO, depth);
 }
 
 static double seg_length(const fg_node *nodes, size_t i)
@@ -61,8 +67,40 @@ static void find_main(const fg_node *nodes, size_t count, unsigned char *main)
         main[i] = 1;
 }
 
+/* The light points: FGG_FLASH_LIGHTS places at even steps of the summed
+ * length x brightness of the segments (in node order), each on the
+ * segment where its step falls. */
+static void light_points(const float *seg, size_t n, fgg_flash_rec *rec)
+{
+    double total = 0;
+    for (size_t i = 0; i < n; i++) {
+        const float *s = &seg[i * FGG_SEGMENT_FLOATS];
+        total += (s[7] - s[3]) * s[9];
+    }
+    rec->light_count = rec->light_main_count = 0;
+    if (!(total > 0))
+        return;
+    double sum = 0;
+    size_t k = 0;
+    for (size_t i = 0; i < n && k < FGG_FLASH_LIGHTS; i++) {
+        const float *s = &seg[i * FGG_SEGMENT_FLOATS];
+        double w = (s[7] - s[3]) * s[9];
+        while (k < FGG_FLASH_LIGHTS && sum + w >= (k + 0.5) * total / FGG_FLASH_LIGHTS) {
+            double u = w > 0 ? ((k + 0.5) * total / FGG_FLASH_LIGHTS - sum) / w : 0.5;
+            for (int c = 0; c < 3; c++)
+                rec->light_m[k][c] = s[c] + u * (s[4 + c] - s[c]);
+            rec->light_path_m[k] = s[3] + u * (s[7] - s[3]);
+            rec->light_main[k] = s[10] > 0.5f;
+            rec->light_main_count += rec->light_main[k];
+            k++;
+        }
+        sum += w;
+    }
+    rec->light_count = k;
+}
+
 fg_result fgg_picture_tree_segments(const fg_node *nodes, size_t count, double radius_m,
-                                    fgg_flash_rec *rec)
+                                    int continuous, fgg_flash_rec *rec)
 {
     size_t n = count - 1;
     double *path = calloc(count, sizeof *path);
@@ -101,7 +139,8 @@ fg_result fgg_picture_tree_segments(const fg_node *nodes, size_t count, double r
     }
     double extent = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                          (hi[2] - lo[2]) * (hi[2] - lo[2]));
-    double radius = radius_m > 0 ? radius_m : DEFAULT_RADIUS_FRACTION * extent;
+    double radius = radius_m > 0 ? radius_m
+                    : (continuous ? GLOW_RADIUS_FRACTION : DEFAULT_RADIUS_FRACTION) * extent;
     double longest = 0;
     for (size_t i = 1; i < count; i++) {
         size_t p = (size_t)nodes[i].parent;
@@ -121,8 +160,8 @@ fg_result fgg_picture_tree_segments(const fg_node *nodes, size_t count, double r
         s[5] = (float)(nodes[i].y - nodes[0].y);
         s[6] = (float)(nodes[i].z - nodes[0].z);
         s[7] = (float)path[i];
-        s[8] = (float)(radius * fgg_picture_level_width(depth[i]));
-        s[9] = (float)fgg_picture_level_brightness(depth[i]);
+        s[8] = (float)(radius * fgg_picture_level_width(depth[i], continuous));
+        s[9] = (float)fgg_picture_level_brightness(depth[i], continuous);
         s[10] = main[i] ? 1.0f : 0.0f;
         s[11] = has_child[i] ? 0.0f : 1.0f;
         s[12] = s[13] = s[14] = s[15] = 0.0f;
@@ -131,8 +170,10 @@ fg_result fgg_picture_tree_segments(const fg_node *nodes, size_t count, double r
     rec->origin_m[1] = nodes[0].y;
     rec->origin_m[2] = nodes[0].z;
     rec->path_m = longest;
+    rec->extent_m = extent;
     rec->segments = seg;
     rec->segment_count = n;
+    light_points(seg, n, rec);
     free(path), free(below), free(cont), free(depth), free(main), free(has_child);
     return FG_OK;
 }

@@ -1,0 +1,199 @@
+/* Level 0 in single precision, for a correction (0 on Dirichlet nodes):
+ * red-black Gauss-Seidel and the residual, in the mirror form of
+ * fg_level_row (laplace.c has the operator), on split rows (fg_split).
+ *
+ * On split rows the nodes of one colour in a row are one contiguous half,
+ * their x-neighbours the other half, their y- and z-neighbours the same
+ * half of the next rows: a half-sweep reads and writes four nodes at a
+ * time with no gather and no blend. L->inv_diag is 1 / dg on free nodes
+ * and 0 on Dirichlet ones, so the update leaves those at 0. */
+#include "field_internal.h"
+#include "field_simd.h"
+
+/* A row: the level's constants and where its neighbours are. */
+typedef struct fine_row {
+    float cx, cy, cz, dg;
+    int n, ne;                 /* nodes, and of those even */
+    size_t at;                 /* index of the row's first node */
+    ptrdiff_t south, north, down, up;
+    float scale;               /* fg_row's */
+} fine_row;
+
+static fine_row row_of(const fg_level *L, int j, int k)
+{
+    fg_row r = fg_level_row(L, j, k);
+    fine_row f;
+    f.cx = (float)L->c[0];
+    f.cy = (float)L->c[1];
+    f.cz = (float)L->c[2];
+    f.dg = 2.0f * (f.cx + f.cy + f.cz);
+    f.n = L->n[0];
+    f.ne = (L->n[0] + 1) / 2;
+    f.at = r.at;
+    f.south = r.south;
+    f.north = r.north;
+    f.down = r.down;
+    f.up = r.up;
+    f.scale = (float)r.scale;
+    return f;
+}
+
+/* Node q of a row of x (split), q mirrored into the row. */
+static inline float node(const fine_row *f, const float *x, int q)
+{
+    q = q < 0 ? -q : (q >= f->n ? 2 * (f->n - 1) - q : q);
+    return x[f->at + fg_split(f->n, q)];
+}
+
+/* The mirror-form neighbour sum sum_j c_ij x_j at node i, and the scale of
+ * its finite-volume row. */
+static inline float neighbours(const fine_row *f, const float *x, int i)
+{
+    const float *s = x + f->at + fg_split(f->n, i);
+    return f->cx * (node(f, x, i - 1) + node(f, x, i + 1)) +
+           f->cy * (s[f->south] + s[f->north]) + f->cz * (s[f->down] + s[f->up]);
+}
+
+static inline float scale_at(const fine_row *f, int i)
+{
+    return i == 0 || i == f->n - 1 ? 0.5f * f->scale : f->scale;
+}
+
+/* The run of a half (h = 0 even, 1 odd) where both x-neighbours are in the
+ * other half at t + west and t + west + 1: [lo, hi). */
+typedef struct half {
+    int first, count;          /* the half's offset in the row, and its length */
+    int other, west;           /* the other half's offset; its index of the west neighbour */
+    int lo, hi;
+} half;
+
+static half half_of(const fine_row *f, int h)
+{
+    int no = f->n / 2;
+    half s;
+    if (h == 0) {
+        s = (half){0, f->ne, f->ne, -1, 1, f->ne < no ? f->ne : no};
+    } else {
+        int top = f->ne - 1;
+        s = (half){f->ne, no, 0, 0, 0, no < top ? no : top};
+    }
+    return s;
+}
+
+/* inv (rhs / scale + neighbours) at node i, one node. */
+static inline float relaxed(const fg_level *L, const fine_row *f, const float *x,
+                            const float *rhs, int i)
+{
+    size_t id = f->at + fg_split(f->n, i);
+    float b = rhs ? rhs[id] / scale_at(f, i) : 0.0f;
+    return L->inv_diag[id] * (b + neighbours(f, x, i));
+}
+
+/* The blocks of lanes over [lo, hi) that the vector loops take: from lo
+ * a block at a time, the last one moved back to end at hi, so that it
+ * overlaps the one before. A half-sweep may do that, since it reads only
+ * the other colour, and so may the residual, which writes elsewhere. The
+ * block after the one at t: */
+static inline int next_block(const half *s, int t)
+{
+    int next = t + FG_VF_LANES;
+    return next < s->hi && next + FG_VF_LANES > s->hi ? s->hi - FG_VF_LANES : next;
+}
+
+/* Where the scalar nodes after the blocks start: hi, or lo when [lo, hi)
+ * is shorter than a block (no block then). */
+static inline int after_blocks(const half *s)
+{
+    return s->hi - s->lo >= FG_VF_LANES ? s->hi : s->lo;
+}
+
+void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color)
+{
+    for (int k = 0; k < L->n[2]; k++)
+        for (int j = 0; j < L->n[1]; j++) {
+            const fine_row f = row_of(L, j, k);
+            const int h = (color + j + k) & 1;
+            const half s = half_of(&f, h);
+            float *x = e + f.at + s.first;
+            const float *o = e + f.at + s.other + s.west;
+            const float *inv = L->inv_diag + f.at + s.first;
+            const fg_vf cx = fg_vf_set(f.cx), cy = fg_vf_set(f.cy), cz = fg_vf_set(f.cz),
+                        up = fg_vf_set(1.0f / f.scale);
+            for (int t = s.lo; t + FG_VF_LANES <= s.hi; t = next_block(&s, t)) {
+                fg_vf v = cx * (fg_vf_load(o + t) + fg_vf_load(o + t + 1)) +
+                          cy * (fg_vf_load(x + f.south + t) + fg_vf_load(x + f.north + t)) +
+                          cz * (fg_vf_load(x + f.down + t) + fg_vf_load(x + f.up + t));
+                if (rhs)
+                    v += fg_vf_load(rhs + f.at + s.first + t) * up;
+                fg_vf_store(x + t, fg_vf_load(inv + t) * v);
+            }
+            for (int u = 0; u < s.lo; u++)
+                x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
+            for (int u = after_blocks(&s); u < s.count; u++)
+                x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
+        }
+}
+
+void fg_fine_sweep_from_zero(const fg_level *L, float *e, const float *rhs)
+{
+    for (int k = 0; k < L->n[2]; k++)
+        for (int j = 0; j < L->n[1]; j++) {
+            const fine_row f = row_of(L, j, k);
+            const half s = half_of(&f, (j + k) & 1), other = half_of(&f, (j + k + 1) & 1);
+            float *x = e + f.at + s.first;
+            const float *b = rhs + f.at + s.first, *inv = L->inv_diag + f.at + s.first;
+            const fg_vf up = fg_vf_set(1.0f / f.scale);
+            int t = 0;
+            for (; t + FG_VF_LANES <= s.count; t += FG_VF_LANES)
+                fg_vf_store(x + t, fg_vf_load(inv + t) * (fg_vf_load(b + t) * up));
+            for (; t < s.count; t++)
+                x[t] = inv[t] * (b[t] / f.scale);
+            /* A row's end nodes have their right-hand side doubled again. */
+            int ends[2] = {0, f.n - 1};
+            for (int a = 0; a < 2; a++)
+                if ((ends[a] & 1) == ((j + k) & 1))
+                    x[ends[a] / 2] = inv[ends[a] / 2] * (b[ends[a] / 2] / scale_at(&f, ends[a]));
+            memset(e + f.at + other.first, 0, (size_t)other.count * sizeof *e);
+        }
+}
+
+/* One node of fg_fine_residual: node u of the half at first, h's parity. */
+static inline float residual_at(const fine_row *f, const float *x, const float *rhs, int first,
+                                const float *inv, int u, int h)
+{
+    int i = 2 * u + h;
+    size_t id = f->at + (size_t)first + (size_t)u;
+    float v = (neighbours(f, x, i) - f->dg * x[id]) * scale_at(f, i);
+    if (rhs)
+        v += rhs[id];
+    return inv[u] != 0.0f ? v : 0.0f;
+}
+
+void fg_fine_residual(const fg_level *L, const float *x, const float *rhs, float *out)
+{
+    for (int k = 0; k < L->n[2]; k++)
+        for (int j = 0; j < L->n[1]; j++) {
+            const fine_row f = row_of(L, j, k);
+            const fg_vf cx = fg_vf_set(f.cx), cy = fg_vf_set(f.cy), cz = fg_vf_set(f.cz),
+                        dg = fg_vf_set(f.dg), scale = fg_vf_set(f.scale), zero = fg_vf_set(0.0f);
+            for (int h = 0; h < 2; h++) {
+                const half s = half_of(&f, h);
+                const float *xr = x + f.at + s.first, *o = x + f.at + s.other + s.west;
+                const float *inv = L->inv_diag + f.at + s.first;
+                float *res = out + f.at + s.first;
+                for (int t = s.lo; t + FG_VF_LANES <= s.hi; t = next_block(&s, t)) {
+                    fg_vf v = cx * (fg_vf_load(o + t) + fg_vf_load(o + t + 1)) +
+                              cy * (fg_vf_load(xr + f.south + t) + fg_vf_load(xr + f.north + t)) +
+                              cz * (fg_vf_load(xr + f.down + t) + fg_vf_load(xr + f.up + t));
+                    v = (v - dg * fg_vf_load(xr + t)) * scale;
+                    if (rhs)
+                        v += fg_vf_load(rhs + f.at + s.first + t);
+                    fg_vf_store(res + t, fg_vf_select(fg_vf_load(inv + t) != zero, v, zero));
+                }
+                for (int u = 0; u < s.lo; u++)
+                    res[u] = residual_at(&f, x, rhs, s.first, inv, u, h);
+                for (int u = after_blocks(&s); u < s.count; u++)
+                    res[u] = residual_at(&f, x, rhs, s.first, inv, u, h);
+            }
+        }
+}
