@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds the benchmarks (Release) and runs them all, writing CSV and plots
-# to bench/results/. Takes a few minutes on 2 cores.
+# to bench/results/. Takes a few minutes on 2 cores, and bench_aero (the
+# sound-texture precompute times) about an hour more; FULGUR_BENCH_SKIP=aero
+# leaves it out.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/deps.sh
@@ -9,6 +11,7 @@ cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DFULGUR_TESTS=OFF >/dev/nu
 cmake --build build-bench -j2 >/dev/null
 mkdir -p bench/results
 for b in build-bench/bench/bench_*; do
+  case " ${FULGUR_BENCH_SKIP:-} " in *" ${b##*/bench_} "*) continue ;; esac
   echo "== ${b##*/}"
   case ${b##*/} in
     bench_startup) "$b" build-bench/host/fulgur bench/scenes/one_segment.json ;;

@@ -16,6 +16,7 @@ static const struct {
     {"view", view_main, "show and sound discharges in a window (or headless): place charges, trigger"},
 #endif
     {"analyze", analyze_main, "write a WAV's waveform envelope and spectrogram for gnuplot"},
+    {"aerotex", aerotex_main, "compute an aerodynamic sound texture of a shape by CFD (or show one)"},
 };
 
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])

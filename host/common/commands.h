@@ -14,5 +14,6 @@ int render_main(int argc, char **argv);
 int analyze_main(int argc, char **argv);
 int run_main(int argc, char **argv);
 int view_main(int argc, char **argv);
+int aerotex_main(int argc, char **argv); /* host/cli/aerotex.c */
 
 #endif

@@ -2,6 +2,7 @@
 #ifndef FULGUR_FULGUR_H
 #define FULGUR_FULGUR_H
 
+#include "fulgur/aero.h"
 #include "fulgur/charges.h"
 #include "fulgur/defs.h"
 #include "fulgur/field_scene.h"
