@@ -28,6 +28,13 @@ static double wm_start_s(const fg_event *ev, int k, double c_m_s)
     return ev->center_s[k] - half;
 }
 
+static bool wm_finite(const fg_event *ev, int k, double fs_hz, double c_m_s)
+{
+    fg_wm_event we = {.shape = ev->shape[k], .center = ev->center_s[k] * fs_hz,
+                      .width = fs_hz * ev->half_len_m / c_m_s};
+    return fg_wm_event_in_range(&we);
+}
+
 static fg_wave_status wm_add(const fg_event *ev, const fg_event_play *play, long *first,
                              long *last)
 {
@@ -38,6 +45,8 @@ static fg_wave_status wm_add(const fg_event *ev, const fg_event_play *play, long
         .center = play->origin_frame + (play->offset_s + ev->center_s[ch]) * fs,
         .width = fs * ev->half_len_m / play->c_m_s,
     };
+    if (!fg_wm_event_in_range(&we))
+        return FG_WAVE_NON_FINITE;
     fg_wm_event_span(&we, first, last);
     fg_wave_status status = FG_WAVE_DONE;
     for (int k = 0; k < 2; k++) {
@@ -45,6 +54,8 @@ static fg_wave_status wm_add(const fg_event *ev, const fg_event_play *play, long
             continue;
         we.shape.b = ev->shape[ch].b * play->share[k];
         status = fg_wm_accum_add(fg_bus_accum(play->buses, play->bus + k * FG_BUS_PLAIN, ch), &we);
+        if (status == FG_WAVE_NON_FINITE)
+            break;
     }
     return status;
 }
@@ -58,6 +69,8 @@ static const fg_discharge_model wm_model = {
     .stride = wm_stride,
     .wave = wm_wave,
     .start_s = wm_start_s,
+    .finite = wm_finite,
+    .samples_per_unit = 0, /* a few closed-form terms, whatever its length */
 };
 
 const fg_source_ops fg_source_wm = {
