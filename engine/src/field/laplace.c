@@ -5,6 +5,8 @@
  * (a quarter on an edge of the box): that is what makes the box faces
  * Neumann and keeps A symmetric. Masked (Dirichlet) neighbours contribute
  * their value in x: phi for the potential, 0 for a correction. */
+#include <stddef.h>
+
 #include "field_internal.h"
 
 static inline double face(int i, int n)
@@ -49,7 +51,9 @@ static inline void residual_at(const fg_level *L, const double *x, const double 
 void fg_lap_residual(const fg_level *L, const double *x, const double *rhs, double *out)
 {
     const int *n = L->n;
-    size_t sy = (size_t)n[0], sz = (size_t)n[0] * (size_t)n[1];
+    /* signed strides: xr[i - sy] steps back from a row, never round the
+     * address space */
+    ptrdiff_t sy = n[0], sz = (ptrdiff_t)n[0] * n[1];
     double cx = L->c[0], cy = L->c[1], cz = L->c[2], dg = 2.0 * (cx + cy + cz);
     for (int k = 0; k < n[2]; k++)
         for (int j = 0; j < n[1]; j++) {
@@ -98,7 +102,7 @@ static inline void relax(const fg_level *L, double *x, const double *rhs, int i,
 void fg_lap_sweep(const fg_level *L, double *x, const double *rhs, int color, double omega)
 {
     const int *n = L->n;
-    size_t sy = (size_t)n[0], sz = (size_t)n[0] * (size_t)n[1];
+    ptrdiff_t sy = n[0], sz = (ptrdiff_t)n[0] * n[1]; /* signed, as in the residual */
     double cx = L->c[0], cy = L->c[1], cz = L->c[2];
     double inv = omega / (2.0 * (cx + cy + cz));
     for (int k = 0; k < n[2]; k++)
