@@ -92,7 +92,7 @@ static const struct {
      "discharges[0].preset: unknown preset \"sprak\" (spark_balls, plasma_ball, lightning)"},
     {"{\"discharges\":[{\"time\":0," TREE "}]}",
      "discharges[0].preset: required (spark_balls, plasma_ball, lightning)"},
-    {ONE_TREE("\"T0\":-1"), "discharges[0].T0: -1 is outside (0, 0.1]"},
+    {ONE_TREE("\"T0\":-1"), "discharges[0].T0: -1 is outside 1e-07..0.1"},
     {ONE_TREE("\"t0_jitter\":1"), "discharges[0].t0_jitter: 1 is outside [0, 1)"},
     {ONE_TREE("\"strokes\":33"), "discharges[0].strokes: 33 is outside 0..32"},
     {ONE_TREE("\"offset\":[1,2]"), "discharges[0].offset: expected an array [x, y, z]"},

@@ -43,8 +43,9 @@ static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_siz
         json_number(json, "", "seed", SCENE_SEED_RANGE, &seed, err, err_size) ||
         json_number(json, "", "gain", (number_range){0, 1e9, .lo_open = true}, &s->gain, err,
                     err_size) ||
-        json_number(json, "", "speed_of_sound", (number_range){.lo = 100, .hi = 1000}, &speed, err,
-                    err_size) ||
+        json_number(json, "", "speed_of_sound",
+                    (number_range){.lo = FG_SPEED_OF_SOUND_MIN_M_S, .hi = FG_SPEED_OF_SOUND_MAX_M_S},
+                    &speed, err, err_size) ||
         json_number(json, "", "temperature_c", (number_range){.lo = -70, .hi = 60}, &temp, err,
                     err_size) ||
         json_number(json, "", "humidity", (number_range){0, 100, .lo_open = true}, &s->humidity_pct,
