@@ -145,6 +145,12 @@ static const struct {
      "random.time: not allowed: times are drawn at rate_hz"},
     {WITH_SPARK("\"random\":{\"rate_hz\":1,\"end\":3,\"region\":{\"min\":[0,0,1],\"max\":[0,0,0]},\"preset\":\"spark_balls\"," TREE "},"),
      "random.region.min: above max in coordinate 2 (1 > 0)"},
+    /* the region once shifted trees past the check: exit 1, no path */
+    {WITH_SPARK("\"random\":{\"rate_hz\":1,\"end\":3,\"region\":{\"min\":[-1e308,0,0],\"max\":[1e308,0,0]},\"preset\":\"spark_balls\"," TREE "},"),
+     "random.region.min: coordinate 0 (-1e+308) is beyond +-1e+07 m"},
+    {WITH_SPARK("\"random\":{\"rate_hz\":1,\"end\":3,\"region\":{\"min\":[0,0,1e7],\"max\":[0,0,1e7]},\"preset\":\"spark_balls\"," TREE "},"),
+     "random.region: a discharge shifted by [0, 0, 10000000] is refused: random.tree.nodes[1]: "
+     "node 1 has a coordinate of 1e+07 m, beyond +-1e+07 m"},
     {WITH_SPARK("\"random\":{\"rate_hz\":1,\"end\":3,\"preset\":\"sprak\"," TREE "},"),
      "random.preset: unknown preset \"sprak\" (spark_balls, plasma_ball, lightning)"},
     {WITH_SPARK("\"listener\":{\"position\":[0,0,0],\"up\":[0,2,0]},"),
