@@ -112,6 +112,12 @@ int analyze_main(int argc, char **argv)
     options_result parsed = options_parse(&cl, argc, argv, &in, &operands);
     if (parsed != OPTIONS_OK)
         return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
+    char err[512];
+    if ((wave && temp_file_check_output(wave, in, err, sizeof err) != 0) ||
+        (spec && temp_file_check_output(spec, in, err, sizeof err) != 0)) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_USAGE;
+    }
     audio a;
     if (read_wav(in, &a) != 0)
         return CLI_USAGE;

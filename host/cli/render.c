@@ -152,7 +152,25 @@ static void release(render_job *job)
     free(job->planes[1]);
 }
 
-static int render_file(const scene *s, const char *out_path)
+/* The picture (--png) into its temporary file, when asked for. */
+static int draw(const scene *s, temp_file *png, double png_time, char *err, size_t err_size)
+{
+    if (!png->path)
+        return 0;
+#ifdef FULGUR_HAVE_GPU
+    return render_picture(s, png->temp_path, png->path, png_time, err, err_size);
+#else
+    (void)s;
+    (void)png_time;
+    snprintf(err, err_size, "--png needs gpu/");
+    return -1;
+#endif
+}
+
+/* Renders the WAV and draws the picture (png->path NULL: none) into
+ * temporary files and commits them together: a failure of either leaves
+ * neither. */
+static int render_file(const scene *s, const char *out_path, temp_file *png, double png_time)
 {
     char err[512];
     render_job job = {.s = s};
@@ -163,6 +181,8 @@ static int render_file(const scene *s, const char *out_path)
              temp_file_open(&out, out_path, err, sizeof err) == 0;
     if (!ok) {
         release(&job);
+        if (png->path)
+            temp_file_abort(png);
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
     }
@@ -172,9 +192,17 @@ static int render_file(const scene *s, const char *out_path)
         ok = 0;
     }
     if (ok)
+        ok = draw(s, png, png_time, err, sizeof err) == 0;
+    if (ok)
         ok = temp_file_commit(&out, err, sizeof err) == 0;
     else
         temp_file_abort(&out);
+    if (png->path) {
+        if (ok)
+            ok = temp_file_commit(png, err, sizeof err) == 0;
+        else
+            temp_file_abort(png);
+    }
     fg_engine_report stats;
     fg_engine_get_report(job.engine, &stats);
     release(&job);
@@ -221,6 +249,11 @@ int render_main(int argc, char **argv)
     }
 #endif
     char err[512];
+    if (temp_file_check_output(out_path, scene_path, err, sizeof err) != 0 ||
+        (png_path && temp_file_check_output(png_path, scene_path, err, sizeof err) != 0)) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_USAGE;
+    }
     scene s;
     if (scene_load(scene_path, &s, err, sizeof err) != 0) {
         fprintf(stderr, "fulgur: %s\n", err);
@@ -231,14 +264,13 @@ int render_main(int argc, char **argv)
         scene_deinit(&s);
         return CLI_USAGE;
     }
-    int rc = render_file(&s, out_path);
-#ifdef FULGUR_HAVE_GPU
-    if (rc == CLI_OK && png_path &&
-        render_picture(&s, png_path, png_time, err, sizeof err) != 0) {
+    temp_file png = {.fd = -1};
+    if (png_path && temp_file_open(&png, png_path, err, sizeof err) != 0) {
         fprintf(stderr, "fulgur: %s\n", err);
-        rc = CLI_RUNTIME;
+        scene_deinit(&s);
+        return CLI_RUNTIME;
     }
-#endif
+    int rc = render_file(&s, out_path, &png, png_time);
     scene_deinit(&s);
     return rc;
 }

@@ -34,7 +34,8 @@ static int add_flashes(fgg_picture *pic, const scene *s, char *err, size_t err_s
     return 0;
 }
 
-int render_picture(const scene *s, const char *path, double time_s, char *err, size_t err_size)
+int render_picture(const scene *s, const char *path, const char *name, double time_s, char *err,
+                   size_t err_size)
 {
     double t = time_s;
     if (isnan(t)) {
@@ -67,7 +68,7 @@ int render_picture(const scene *s, const char *path, double time_s, char *err, s
     else
         rc = 0;
     if (rc == 0)
-        printf("%s: the picture at %.6f s (%d x %d)\n", path, t, PICTURE_WIDTH, PICTURE_HEIGHT);
+        printf("%s: the picture at %.6f s (%d x %d)\n", name, t, PICTURE_WIDTH, PICTURE_HEIGHT);
     fgg_picture_destroy(pic);
     fgg_context_destroy(ctx);
     return rc;

@@ -9,7 +9,9 @@
 
 /* Draws the built scene at time_s (NAN: the first return stroke, the
  * earliest emit time) from the scene's camera and writes a PNG at path (no
- * file on error). Returns 0, or -1 with a message in err. */
-int render_picture(const scene *s, const char *path, double time_s, char *err, size_t err_size);
+ * file on error); name is the file's final name, for the line it prints.
+ * Returns 0, or -1 with a message in err. */
+int render_picture(const scene *s, const char *path, const char *name, double time_s, char *err,
+                   size_t err_size);
 
 #endif

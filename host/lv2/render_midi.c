@@ -129,6 +129,10 @@ int main(int argc, char **argv)
     if (parsed != 0)
         return parsed > 0 ? 0 : 2;
     char err[512];
+    if (temp_file_check_output(o.out, o.in, err, sizeof err)) {
+        fprintf(stderr, "fulgur-lv2-render: %s\n", err);
+        return 2;
+    }
     smf_event *events;
     size_t count;
     if (smf_read(o.in, &events, &count, err, sizeof err)) {
