@@ -1,12 +1,16 @@
 /* The scene parser: a table of bad scenes, each with its exact message;
  * defaults; the listener path; derived seeds. */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp, mkfifo, truncate */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
@@ -375,6 +379,43 @@ static void test_derived_seeds(void **state)
     scene_deinit(&b);
 }
 
+/* scene_load refuses what is no scene file before reading it: a FIFO (a
+ * read would block), a directory, a device (the zero device once grew to
+ * 5.9 GB), a file over the cap; a regular file within it loads. */
+static void test_load_refuses(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/fulgur-scene-XXXXXX", path[64], err[256];
+    assert_non_null(mkdtemp(dir));
+    scene s;
+    snprintf(path, sizeof path, "%s/fifo.json", dir);
+    assert_int_equal(mkfifo(path, 0600), 0);
+    assert_int_equal(scene_load(path, &s, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a regular file"));
+    unlink(path);
+    assert_int_equal(scene_load(dir, &s, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a regular file"));
+    assert_int_equal(scene_load("/dev/zero", &s, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a regular file"));
+    snprintf(path, sizeof path, "%s/big.json", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(SPARK, f);
+    fclose(f);
+    assert_int_equal(truncate(path, (off_t)SCENE_MAX_FILE_BYTES + 1), 0); /* sparse */
+    assert_int_equal(scene_load(path, &s, err, sizeof err), -1);
+    assert_non_null(strstr(err, "more than a scene file may hold (64 MiB)"));
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("{\"discharges\":[" SPARK "]}", f);
+    fclose(f);
+    assert_int_equal(scene_load(path, &s, err, sizeof err), 0);
+    assert_int_equal(s.discharge_count, 1);
+    scene_deinit(&s);
+    unlink(path);
+    rmdir(dir);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -384,6 +425,7 @@ int main(void)
         cmocka_unit_test(test_propagation),
         cmocka_unit_test(test_listener_path),
         cmocka_unit_test(test_derived_seeds),
+        cmocka_unit_test(test_load_refuses),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

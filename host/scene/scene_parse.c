@@ -1,8 +1,12 @@
 /* The scene's top level: settings, then the listener and the discharges. */
+#define _POSIX_C_SOURCE 200809L /* fdopen */
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "scene_internal.h"
 #include "fg_array.h"
@@ -150,13 +154,34 @@ int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err
 int scene_load(const char *path, scene *out, char *err, size_t err_size)
 {
     memset(out, 0, sizeof *out);
-    FILE *f = fopen(path, "rb");
+    /* opened without blocking, so that a FIFO cannot stall the check */
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0) {
+        snprintf(err, err_size, "%s: cannot open: %s", path, strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        return -1;
+    }
+    if (!S_ISREG(st.st_mode) || st.st_size > (off_t)SCENE_MAX_FILE_BYTES) {
+        if (S_ISREG(st.st_mode))
+            snprintf(err, err_size, "%s: %lld bytes, more than a scene file may hold (%u MiB)",
+                     path, (long long)st.st_size, SCENE_MAX_FILE_BYTES >> 20);
+        else
+            snprintf(err, err_size, "%s: not a regular file (a device, FIFO or directory)",
+                     path);
+        close(fd);
+        return -1;
+    }
+    FILE *f = fdopen(fd, "rb");
     if (!f) {
         snprintf(err, err_size, "%s: cannot open: %s", path, strerror(errno));
+        close(fd);
         return -1;
     }
     char *text = NULL;
     size_t size = 0, cap = 0;
+    /* the file may grow while it is read: never past the cap */
     for (;;) {
         if (size == cap) {
             char *grown = fg_array_grow(text, &cap, size + 1, 1, 65536);
@@ -166,14 +191,15 @@ int scene_load(const char *path, scene *out, char *err, size_t err_size)
         }
         size_t got = fread(text + size, 1, cap - size, f);
         size += got;
-        if (got == 0)
+        if (got == 0 || size > SCENE_MAX_FILE_BYTES)
             break;
     }
-    int failed = ferror(f) || size == cap;
+    int failed = ferror(f) || size == cap || size > SCENE_MAX_FILE_BYTES;
     fclose(f);
     int rc = -1;
     if (failed)
-        snprintf(err, err_size, "%s: cannot read the file", path);
+        snprintf(err, err_size, "%s: cannot read the file%s", path,
+                 size > SCENE_MAX_FILE_BYTES ? ": it grew past the scene file cap" : "");
     else
         rc = scene_parse(text, size, out, err, err_size);
     free(text);
