@@ -242,6 +242,38 @@ static void test_lifecycle(void **state)
     cJSON_Delete(r);
 }
 
+/* A tree above the engine's default segment capacity (131072): run sizes
+ * the engine for the explicit trees, as render does (it once refused what
+ * render handles), and --segments sets the capacity. */
+static void test_large_tree(void **state)
+{
+    (void)state;
+    enum { NODES = 140001 };
+    char path[128];
+    snprintf(path, sizeof path, "%s/large.json", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("{\"duration\":0.1,\"discharges\":[{\"time\":0,\"preset\":\"lightning\","
+          "\"strokes\":1,\"offset\":[0,3000,0],\"tree\":{\"nodes\":[",
+          f);
+    for (int i = 0; i < NODES; i++)
+        fprintf(f, "%s[0,0,%d.%02d,%d]", i ? "," : "", 1000 + i / 100, i % 100, i - 1); /* 1 cm */
+    fputs("]}}]}", f);
+    assert_int_equal(fclose(f), 0);
+    char args[160], cmd[1024];
+    snprintf(args, sizeof args, "--audio wav:%s/large.wav", dir);
+    snprintf(cmd, sizeof cmd, "'%s' run '%s' --report '%s/large.json.report' %s > /dev/null",
+             fulgur, path, dir, args);
+    int status = system(cmd);
+    assert_true(WIFEXITED(status));
+    assert_int_equal(WEXITSTATUS(status), 0);
+    snprintf(cmd, sizeof cmd, "'%s' run '%s' --segments 1000 %s > /dev/null 2>&1", fulgur, path,
+             args);
+    status = system(cmd);
+    assert_true(WIFEXITED(status));
+    assert_int_equal(WEXITSTATUS(status), 1); /* refused for its capacity: the engine's error */
+}
+
 /* Bad options: exit 2, and no WAV is left behind. */
 static void test_bad_arguments(void **state)
 {
@@ -249,6 +281,8 @@ static void test_bad_arguments(void **state)
     static const char *const bad[] = {
         "--block 100", "--rate 22050", "--seconds 0", "--seconds nan", "--audio wav:",
         "--audio pulse", "--voices 0", "--frame-rate -1", "--block", "--unknown 1",
+        /* a 0.05 Hz frame loop held the run's end for 20 s; 1e-9 Hz hung it */
+        "--frame-rate 0.05", "--frame-rate 1e-9", "--segments 0",
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char cmd[1024];
@@ -280,6 +314,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_near_sparks_late),
         cmocka_unit_test(test_burst),
         cmocka_unit_test(test_lifecycle),
+        cmocka_unit_test(test_large_tree),
         cmocka_unit_test(test_bad_arguments),
     };
     int failed = cmocka_run_group_tests(tests, NULL, NULL);

@@ -45,6 +45,19 @@ static int set_up(run_ctx *run, char *err, size_t err_size)
     cfg.sample_rate_hz = run->rate_hz;
     cfg.max_block_frames = run->block_frames;
     cfg.max_voices = run->opt.voices;
+    cfg.segment_capacity = run->opt.segments;
+    fg_engine_config defaults;
+    if (!cfg.segment_capacity && fg_engine_config_resolve(NULL, &defaults) == FG_OK) {
+        /* as render does, for the trees known before the run */
+        size_t explicit_segments = 0;
+        for (size_t i = 0; i < s->discharge_count; i++)
+            if (!s->discharges[i].generator)
+                explicit_segments += s->discharges[i].post.node_count - 1;
+        if (explicit_segments > defaults.segment_capacity)
+            cfg.segment_capacity = explicit_segments > RUN_MAX_SEGMENTS
+                                       ? RUN_MAX_SEGMENTS
+                                       : (uint32_t)explicit_segments;
+    }
     fg_result r = fg_engine_create(&cfg, &run->engine);
     if (r != FG_OK) {
         snprintf(err, err_size, "engine: %s", fg_result_str(r));

@@ -43,6 +43,8 @@
  * yaw (the frame thread's sway, run_frame.c). */
 #define RUN_SWAY_M 0.03
 #define RUN_SWAY_YAW_RAD 0.17
+/* The largest segment capacity run asks of the engine (--segments). */
+#define RUN_MAX_SEGMENTS (1u << 24)
 
 typedef struct run_options {
     const char *scene_path;
@@ -52,6 +54,7 @@ typedef struct run_options {
     double seconds;           /* 0: the scene's duration, else until all have sounded */
     double frame_hz;          /* 90 */
     uint32_t voices;          /* 0: the engine's default (64) */
+    uint32_t segments;        /* 0: the engine's default, or the explicit trees' total */
     const char *report_path;  /* NULL: stdout, or stderr when the audio is on stdout */
 } run_options;
 
