@@ -93,13 +93,19 @@ static int write_block(render_job *job, uint32_t frames, char *err, size_t err_s
     return 0;
 }
 
+/* The most frames a render of s writes: its duration, else the cap. */
+static uint64_t frame_limit(const scene *s)
+{
+    return (uint64_t)llround((s->duration_s > 0 ? s->duration_s : SCENE_MAX_DURATION_S) *
+                             s->sample_rate_hz);
+}
+
 /* The block loop; *frames_out receives the frames written. */
 static int run(render_job *job, uint64_t *frames_out, char *err, size_t err_size)
 {
     const scene *s = job->s;
     double rate = s->sample_rate_hz;
-    uint64_t limit = (uint64_t)llround((s->duration_s > 0 ? s->duration_s : SCENE_MAX_DURATION_S) *
-                                       rate);
+    uint64_t limit = frame_limit(s);
     uint64_t frame = 0;
     while (frame < limit) {
         double t = (double)frame / rate;
@@ -138,8 +144,8 @@ static int run(render_job *job, uint64_t *frames_out, char *err, size_t err_size
 
 static int open_wav(render_job *job, temp_file *out, char *err, size_t err_size)
 {
-    job->wav = audio_wav_open(out->fd, out->path, job->s->sample_rate_hz, job->s->channels, err,
-                              err_size);
+    job->wav = audio_wav_open(out->fd, out->path, job->s->sample_rate_hz, job->s->channels,
+                              frame_limit(job->s), err, err_size);
     return job->wav ? 0 : -1;
 }
 

@@ -133,7 +133,8 @@ static int run_scene(run_ctx *run)
     }
     int ok = set_up(run, err, sizeof err) == 0 &&
              audio_driver_start(&run->driver, &run->opt.audio, run->rate_hz, run->s->channels,
-                                run->block_frames, (float)run->s->gain, err, sizeof err) == 0;
+                                run->block_frames, run->limit_frames, (float)run->s->gain, err,
+                                sizeof err) == 0;
     if (!ok) {
         tear_down(run);
         if (report_path)

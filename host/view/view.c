@@ -174,7 +174,8 @@ static int view_scene(view *v)
             goto done;
         }
     if (audio_driver_start(&v->driver, &v->opt.audio, v->rate_hz, v->s->channels,
-                           v->block_frames, (float)v->s->gain, err, sizeof err))
+                           v->block_frames, AUDIO_FRAMES_UNBOUNDED, (float)v->s->gain, err,
+                           sizeof err))
         goto done;
     started = pthread_create(&sim, NULL, view_sim_thread, v) == 0;
     started += started && pthread_create(&audio, NULL, view_audio_thread, v) == 0;
