@@ -34,6 +34,8 @@ static LV2_Handle instantiate(const LV2_Descriptor *descriptor, double rate_hz,
     LV2_Worker_Schedule *schedule = NULL;
     LV2_Log_Log *log = NULL;
     for (size_t i = 0; features && features[i]; i++) {
+        if (!features[i]->URI)
+            continue; /* a broken host's entry: not a feature we can use */
         if (!strcmp(features[i]->URI, LV2_URID__map))
             map = features[i]->data;
         else if (!strcmp(features[i]->URI, LV2_WORKER__schedule))
@@ -44,6 +46,12 @@ static LV2_Handle instantiate(const LV2_Descriptor *descriptor, double rate_hz,
     /* the host's log if it has one, else stderr */
     LV2_Log_Logger logger;
     lv2_log_logger_init(&logger, map, log);
+    /* the engine's rates; 0 would have silently run at its default 48 kHz */
+    if (!(rate_hz >= FG_SAMPLE_RATE_MIN_HZ && rate_hz <= FG_SAMPLE_RATE_MAX_HZ)) {
+        lv2_log_error(&logger, "fulgur.lv2: a sample rate of %g Hz, outside %g..%g\n", rate_hz,
+                      FG_SAMPLE_RATE_MIN_HZ, FG_SAMPLE_RATE_MAX_HZ);
+        return NULL;
+    }
     if (!map || !schedule) {
         lv2_log_error(&logger, "fulgur.lv2: the host does not provide %s\n",
                       !map ? LV2_URID__map : LV2_WORKER__schedule);

@@ -22,6 +22,10 @@
 
 typedef struct fg_engine fg_engine;
 
+/* The sample rates the engine accepts, Hz. */
+#define FG_SAMPLE_RATE_MIN_HZ 8000.0
+#define FG_SAMPLE_RATE_MAX_HZ 384000.0
+
 /* The speeds of sound the engine accepts, m/s: every gas a listener
  * breathes lies inside (air: 290 m/s at -70 degC to 368 m/s at 60 degC). */
 #define FG_SPEED_OF_SOUND_MIN_M_S 100.0

@@ -44,7 +44,8 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
         !isfinite(in->air_temperature_k) || !isfinite(in->air_humidity_pct) ||
         !isfinite(in->air_pressure_kpa))
         return FG_ERR_NOT_FINITE;
-    if (in->sample_rate_hz != 0 && (in->sample_rate_hz < 8000 || in->sample_rate_hz > 384000))
+    if (in->sample_rate_hz != 0 && (in->sample_rate_hz < FG_SAMPLE_RATE_MIN_HZ ||
+                                    in->sample_rate_hz > FG_SAMPLE_RATE_MAX_HZ))
         return FG_ERR_SAMPLE_RATE;
     if (in->max_block_frames > MAX_BLOCK_LIMIT || (in->channels != 0 && in->channels > 2) ||
         in->max_voices > MAX_VOICES_LIMIT || in->segment_capacity > SEGMENT_LIMIT ||
