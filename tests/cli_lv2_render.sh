@@ -30,4 +30,13 @@ cat "$dir/err"
 [ $rc -eq 2 ] || { echo "expected exit 2, got $rc"; exit 1; }
 grep -q "not a Standard MIDI File" "$dir/err" || exit 1
 [ ! -e "$dir/bad.wav" ] || { echo "a WAV was left behind"; exit 1; }
+# 40 bytes naming a note 4.5e9 s ahead (1 tick per quarter, a 16.8 s quarter,
+# a delta of 0x0FFFFFFF): once 8.6 GB of WAV in 20 s; now exit 2 at once
+printf 'MThd\000\000\000\006\000\000\000\001\000\001MTrk\000\000\000\022\000\377\121\003\377\377\377\377\377\377\177\220\074\144\000\377\057\000' > "$dir/far.mid"
+"$render" "$dir/far.mid" -o "$dir/far.wav" 2> "$dir/err"
+rc=$?
+cat "$dir/err"
+[ $rc -eq 2 ] || { echo "far future: expected exit 2, got $rc"; exit 1; }
+grep -q "after the 3600 s a render may reach" "$dir/err" || exit 1
+[ -z "$(ls -A "$dir" | grep far.wav)" ] || { echo "far future: a WAV was left behind"; exit 1; }
 echo ok

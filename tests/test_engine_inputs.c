@@ -202,6 +202,35 @@ POST_BAD(post_duration_negative, {
     d.continuous = 1;
     d.duration_s = -1.0;
 })
+/* the physical limits (docs/limits.md): each case once crashed, hung or
+ * rendered NaN on the audio thread */
+/* node 0 lies at x = 0, where such small differences are representable */
+POST_BAD(post_segment_1e160, n[1] = (fg_node){1e-160, n[0].y, n[0].z, 0, 0})
+POST_BAD(post_segment_1e162, n[1] = (fg_node){-1e-162, n[0].y, n[0].z, 0, 0})
+POST_BAD(post_segment_1um_less, n[1] = (fg_node){0.99e-6, n[0].y, n[0].z, 0, 0})
+POST_BAD(post_node_far, n[4].y = 1.0001e7)
+POST_BAD(post_t0_1e308, d.sound.t0_s = 1e-308)
+POST_BAD(post_t0_short, d.sound.t0_s = 0.99e-7)
+POST_BAD(post_t0_long, d.sound.t0_s = 0.11)
+POST_BAD(post_t0_5e289, d.sound.t0_s = 5e289)
+POST_BAD(post_r0_far, d.sound.r0_m = 1001)
+POST_BAD(post_ps0_huge, d.sound.ps0_pa = 1.01e7)
+POST_BAD(post_sigma_huge, d.sound.sigma0 = 10.5)
+POST_BAD(post_return_speed_tiny, d.sound.return_stroke_speed_m_s = 1e-300)
+POST_BAD(post_return_speed_light, d.sound.return_stroke_speed_m_s = 3.1e8)
+POST_BAD(post_repeat_1e300, {
+    d.continuous = 1;
+    d.repeat_min_s = 1e-300;
+    d.repeat_max_s = 1e-300;
+})
+POST_BAD(post_repeat_1us, {
+    d.continuous = 1;
+    d.repeat_min_s = 1e-6;
+})
+POST_BAD(post_repeat_negative, {
+    d.continuous = 1;
+    d.repeat_min_s = -0.01;
+})
 
 /* more segments than the engine holds, ever: refused before the tree is
  * walked, so a wild count over a short array is safe */
@@ -324,6 +353,9 @@ LISTENER_BAD(listener_nearly_parallel, {
     p.up[1] = 1;
     p.up[2] = 1e-9;
 })
+LISTENER_BAD(listener_far, p.position[0] = -1.0001e7)
+LISTENER_BAD(listener_forward_huge, p.forward[1] = 1e200)
+LISTENER_BAD(listener_up_tiny, p.up[2] = 1e-60)
 
 static fg_result stop_null(fg_engine *e)
 {
@@ -394,6 +426,22 @@ static const input_case cases[] = {
     {"post: repeat max 11 s", NULL, post_repeat_too_long, FG_ERR_ARGUMENT, 0, 0},
     {"post: repeat NaN", NULL, post_repeat_nan, FG_ERR_NOT_FINITE, 0, 0},
     {"post: duration < 0", NULL, post_duration_negative, FG_ERR_ARGUMENT, 0, 0},
+    {"post: a 1e-160 m segment", post_and_render, post_segment_1e160, FG_ERR_TREE, 0, 0},
+    {"post: a 1e-162 m segment", NULL, post_segment_1e162, FG_ERR_TREE, 0, 0},
+    {"post: a 0.99 um segment", NULL, post_segment_1um_less, FG_ERR_TREE, 0, 0},
+    {"post: a node 1e7 m out", NULL, post_node_far, FG_ERR_TREE, 0, 0},
+    {"post: T0 1e-308 s", post_one, post_t0_1e308, FG_ERR_ARGUMENT, 0, 0},
+    {"post: T0 0.99e-7 s", NULL, post_t0_short, FG_ERR_ARGUMENT, 0, 0},
+    {"post: T0 0.11 s", NULL, post_t0_long, FG_ERR_ARGUMENT, 0, 0},
+    {"post: T0 5e289 s", NULL, post_t0_5e289, FG_ERR_ARGUMENT, 0, 0},
+    {"post: r0 1001 m", NULL, post_r0_far, FG_ERR_ARGUMENT, 0, 0},
+    {"post: ps0 1.01e7 Pa", NULL, post_ps0_huge, FG_ERR_ARGUMENT, 0, 0},
+    {"post: sigma0 10.5", NULL, post_sigma_huge, FG_ERR_ARGUMENT, 0, 0},
+    {"post: return stroke 1e-300 m/s", NULL, post_return_speed_tiny, FG_ERR_ARGUMENT, 0, 0},
+    {"post: return stroke 3.1e8 m/s", NULL, post_return_speed_light, FG_ERR_ARGUMENT, 0, 0},
+    {"post: repeat 1e-300 s", post_and_render, post_repeat_1e300, FG_ERR_ARGUMENT, 0, 0},
+    {"post: repeat 1e-6 s", NULL, post_repeat_1us, FG_ERR_ARGUMENT, 0, 0},
+    {"post: repeat -0.01 s", NULL, post_repeat_negative, FG_ERR_ARGUMENT, 0, 0},
     {"post: tree over capacity", post_one, post_over_capacity, FG_ERR_CAPACITY, 0, 0},
     {"post: node_count SIZE_MAX", NULL, post_wild_count, FG_ERR_CAPACITY, 0, 0},
     {"post: voice pool full", fill_pool, post_after_fill, FG_ERR_POOL_FULL, 1, 0},
@@ -414,6 +462,9 @@ static const input_case cases[] = {
     {"listener: up parallel", move_and_post, listener_parallel_up, FG_ERR_ARGUMENT, 0, 0},
     {"listener: up antiparallel", NULL, listener_antiparallel_up, FG_ERR_ARGUMENT, 0, 0},
     {"listener: up within 1e-9 rad", NULL, listener_nearly_parallel, FG_ERR_ARGUMENT, 0, 0},
+    {"listener: 1e7 m out", move_and_post, listener_far, FG_ERR_ARGUMENT, 0, 0},
+    {"listener: forward 1e200 long", NULL, listener_forward_huge, FG_ERR_ARGUMENT, 0, 0},
+    {"listener: up 1e-60 long", move_and_post, listener_up_tiny, FG_ERR_ARGUMENT, 0, 0},
     {"stop: NULL engine", post_one, stop_null, FG_ERR_NULL, 0, 0},
     {"stop: id 0", post_one, stop_zero, FG_ERR_NOT_FOUND, 0, 0},
     {"stop: unknown id", post_one, stop_unknown, FG_ERR_NOT_FOUND, 0, 0},
@@ -517,6 +568,10 @@ static const create_case create_cases[] = {
     {"block 65537", 48000, 2, 65537, 343, 0, 0, FG_ERR_ARGUMENT, 0, 0},
     {"speed -343", 48000, 2, 256, -343, 0, 0, FG_ERR_ARGUMENT, 0, 0},
     {"speed NaN", 48000, 2, 256, NAN, 0, 0, FG_ERR_NOT_FINITE, 0, 0},
+    {"speed 1e-300", 48000, 2, 256, 1e-300, 0, 0, FG_ERR_ARGUMENT, 0, 0},
+    {"speed 99", 48000, 2, 256, 99, 0, 0, FG_ERR_ARGUMENT, 0, 0},
+    {"speed 1001", 48000, 2, 256, 1001, 0, 0, FG_ERR_ARGUMENT, 0, 0},
+    {"speed 100", 48000, 2, 256, 100, 0, 0, FG_OK, 48000, 2},
     {"ear spacing -0.1", 48000, 2, 256, 343, -0.1, 0, FG_ERR_ARGUMENT, 0, 0},
     {"look-ahead inf", 48000, 2, 256, 343, 0, INFINITY, FG_ERR_NOT_FINITE, 0, 0},
     {"look-ahead -1", 48000, 2, 256, 343, 0, -1, FG_ERR_ARGUMENT, 0, 0},
@@ -532,7 +587,8 @@ static bool same_config(const fg_engine_config *a, const fg_engine_config *b)
            a->ear_spacing_m == b->ear_spacing_m && a->max_lookahead_s == b->max_lookahead_s &&
            a->max_adopt_per_block == b->max_adopt_per_block &&
            a->air_temperature_k == b->air_temperature_k &&
-           a->air_humidity_pct == b->air_humidity_pct && a->air_pressure_kpa == b->air_pressure_kpa;
+           a->air_humidity_pct == b->air_humidity_pct && a->air_pressure_kpa == b->air_pressure_kpa &&
+           a->work_per_frame == b->work_per_frame;
 }
 
 static void test_create(void **state)
@@ -570,6 +626,7 @@ static void test_create(void **state)
         .sample_rate_hz = 48000, .max_block_frames = 4096, .channels = 2, .max_voices = 64,
         .segment_capacity = 131072, .speed_of_sound_m_s = 343, .ear_spacing_m = 0.18,
         .max_lookahead_s = 0.25, .max_adopt_per_block = 8,
+        .work_per_frame = FG_WORK_PER_FRAME_DEFAULT,
     };
     CHECK(dflt.sample_rate_hz == documented.sample_rate_hz &&
               dflt.max_block_frames == documented.max_block_frames &&
@@ -577,7 +634,8 @@ static void test_create(void **state)
               dflt.speed_of_sound_m_s == documented.speed_of_sound_m_s &&
               dflt.ear_spacing_m == documented.ear_spacing_m &&
               dflt.max_lookahead_s == documented.max_lookahead_s &&
-              dflt.max_adopt_per_block == documented.max_adopt_per_block,
+              dflt.max_adopt_per_block == documented.max_adopt_per_block &&
+              dflt.work_per_frame == 64,
           "a default differs from engine.h");
     CHECK(dflt.segment_capacity == documented.segment_capacity,
           "default segment_capacity %u, engine.h documents %u", dflt.segment_capacity,

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 
 #include <cmocka.h>
+#include <lilv/lilv.h>
 
 #include "lv2_fixture.h"
 
@@ -165,9 +166,32 @@ static void test_unsupported_rates(void **state)
     (void)state;
     assert_null(lv2_host_create(4000));
     assert_null(lv2_host_create(500000));
+    /* 0 once gave an instance that silently ran at 48 kHz */
+    assert_null(lv2_host_create(0));
+    assert_null(lv2_host_create(-48000));
     lv2_host *h = lv2_host_create(8000);
     assert_non_null(h);
     lv2_host_destroy(h);
+}
+
+/* A host whose feature list holds an entry with a NULL URI (lv2file's):
+ * instantiate skips it instead of crashing in strcmp, then refuses for
+ * the missing map and worker features. */
+static void test_null_feature_uri(void **state)
+{
+    (void)state;
+    LilvWorld *world = lilv_world_new();
+    assert_non_null(world);
+    lilv_world_load_all(world); /* LV2_PATH */
+    LilvNode *uri = lilv_new_uri(world, "urn:fulgur:lv2:instrument");
+    const LilvPlugin *plugin = lilv_plugins_get_by_uri(lilv_world_get_all_plugins(world), uri);
+    assert_non_null(plugin);
+    static const LV2_Feature broken = {NULL, NULL};
+    const LV2_Feature *const features[] = {&broken, NULL};
+    LilvInstance *in = lilv_plugin_instantiate(plugin, 48000, features);
+    assert_null(in);
+    lilv_node_free(uri);
+    lilv_world_free(world);
 }
 
 static double rate_44k = 44100, rate_48k = 48000;
@@ -178,6 +202,7 @@ int main(void)
         cmocka_unit_test_prestate(test_play, &rate_44k),
         cmocka_unit_test_prestate(test_play, &rate_48k),
         cmocka_unit_test(test_unsupported_rates),
+        cmocka_unit_test(test_null_feature_uri),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

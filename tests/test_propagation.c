@@ -306,6 +306,9 @@ static void bad_propagation_is_refused(void **state)
         {.absorption = (fg_absorption)7},
         {.ground_reflection = 1.5},
         {.abe_fir_distance_m = -1.0},
+        /* the noise's lattice coordinate p / length once overflowed int64 */
+        {.turbulence_s = 0.002, .turbulence_length_m = 1e-300},
+        {.turbulence_s = 0.002, .turbulence_length_m = 0.99e-3},
     };
     fg_engine *e;
     assert_int_equal(fg_engine_create(NULL, &e), FG_OK);

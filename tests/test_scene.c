@@ -1,12 +1,16 @@
 /* The scene parser: a table of bad scenes, each with its exact message;
  * defaults; the listener path; derived seeds. */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp, mkfifo, truncate */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
@@ -92,7 +96,7 @@ static const struct {
      "discharges[0].preset: unknown preset \"sprak\" (spark_balls, plasma_ball, lightning)"},
     {"{\"discharges\":[{\"time\":0," TREE "}]}",
      "discharges[0].preset: required (spark_balls, plasma_ball, lightning)"},
-    {ONE_TREE("\"T0\":-1"), "discharges[0].T0: -1 is outside (0, 0.1]"},
+    {ONE_TREE("\"T0\":-1"), "discharges[0].T0: -1 is outside 1e-07..0.1"},
     {ONE_TREE("\"t0_jitter\":1"), "discharges[0].t0_jitter: 1 is outside [0, 1)"},
     {ONE_TREE("\"strokes\":33"), "discharges[0].strokes: 33 is outside 0..32"},
     {ONE_TREE("\"offset\":[1,2]"), "discharges[0].offset: expected an array [x, y, z]"},
@@ -145,6 +149,12 @@ static const struct {
      "random.time: not allowed: times are drawn at rate_hz"},
     {WITH_SPARK("\"random\":{\"rate_hz\":1,\"end\":3,\"region\":{\"min\":[0,0,1],\"max\":[0,0,0]},\"preset\":\"spark_balls\"," TREE "},"),
      "random.region.min: above max in coordinate 2 (1 > 0)"},
+    /* the region once shifted trees past the check: exit 1, no path */
+    {WITH_SPARK("\"random\":{\"rate_hz\":1,\"end\":3,\"region\":{\"min\":[-1e308,0,0],\"max\":[1e308,0,0]},\"preset\":\"spark_balls\"," TREE "},"),
+     "random.region.min: coordinate 0 (-1e+308) is beyond +-1e+07 m"},
+    {WITH_SPARK("\"random\":{\"rate_hz\":1,\"end\":3,\"region\":{\"min\":[0,0,1e7],\"max\":[0,0,1e7]},\"preset\":\"spark_balls\"," TREE "},"),
+     "random.region: a discharge shifted by [0, 0, 10000000] is refused: random.tree.nodes[1]: "
+     "node 1 has a coordinate of 1e+07 m, beyond +-1e+07 m"},
     {WITH_SPARK("\"random\":{\"rate_hz\":1,\"end\":3,\"preset\":\"sprak\"," TREE "},"),
      "random.preset: unknown preset \"sprak\" (spark_balls, plasma_ball, lightning)"},
     {WITH_SPARK("\"listener\":{\"position\":[0,0,0],\"up\":[0,2,0]},"),
@@ -369,6 +379,43 @@ static void test_derived_seeds(void **state)
     scene_deinit(&b);
 }
 
+/* scene_load refuses what is no scene file before reading it: a FIFO (a
+ * read would block), a directory, a device (the zero device once grew to
+ * 5.9 GB), a file over the cap; a regular file within it loads. */
+static void test_load_refuses(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/fulgur-scene-XXXXXX", path[64], err[256];
+    assert_non_null(mkdtemp(dir));
+    scene s;
+    snprintf(path, sizeof path, "%s/fifo.json", dir);
+    assert_int_equal(mkfifo(path, 0600), 0);
+    assert_int_equal(scene_load(path, &s, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a regular file"));
+    unlink(path);
+    assert_int_equal(scene_load(dir, &s, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a regular file"));
+    assert_int_equal(scene_load("/dev/zero", &s, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a regular file"));
+    snprintf(path, sizeof path, "%s/big.json", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(SPARK, f);
+    fclose(f);
+    assert_int_equal(truncate(path, (off_t)SCENE_MAX_FILE_BYTES + 1), 0); /* sparse */
+    assert_int_equal(scene_load(path, &s, err, sizeof err), -1);
+    assert_non_null(strstr(err, "more than a scene file may hold (64 MiB)"));
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("{\"discharges\":[" SPARK "]}", f);
+    fclose(f);
+    assert_int_equal(scene_load(path, &s, err, sizeof err), 0);
+    assert_int_equal(s.discharge_count, 1);
+    scene_deinit(&s);
+    unlink(path);
+    rmdir(dir);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -378,6 +425,7 @@ int main(void)
         cmocka_unit_test(test_propagation),
         cmocka_unit_test(test_listener_path),
         cmocka_unit_test(test_derived_seeds),
+        cmocka_unit_test(test_load_refuses),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -15,6 +15,8 @@
 
 #define ENVELOPE_POINTS 2000
 #define P_REF_PA 20e-6
+/* Twice the highest rate of any audio interface or format in use (384 kHz) */
+#define ANALYZE_MAX_RATE_HZ 768000
 
 static const char about[] =
     "Prints the peak and RMS pressure of a WAV. A WAV that fulgur render wrote at\n"
@@ -40,6 +42,14 @@ static int read_wav(const char *path, audio *a)
     SNDFILE *f = sf_open(path, SFM_READ, &info);
     if (!f) {
         fprintf(stderr, "fulgur: %s: %s\n", path, sf_strerror(NULL));
+        return -1;
+    }
+    /* the header's rate sizes the spectrogram's window: a rate no audio
+     * file has (2 147 483 647 Hz in 844 bytes took 8.3 GB) is refused */
+    if (info.samplerate < 1 || info.samplerate > ANALYZE_MAX_RATE_HZ) {
+        fprintf(stderr, "fulgur: %s: a sample rate of %d Hz, outside 1..%d\n", path,
+                info.samplerate, ANALYZE_MAX_RATE_HZ);
+        sf_close(f);
         return -1;
     }
     a->frames = (size_t)info.frames;
@@ -129,6 +139,12 @@ int analyze_main(int argc, char **argv)
     options_result parsed = options_parse(&cl, argc, argv, &in, &operands);
     if (parsed != OPTIONS_OK)
         return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
+    char err[512];
+    if ((wave && temp_file_check_output(wave, in, err, sizeof err) != 0) ||
+        (spec && temp_file_check_output(spec, in, err, sizeof err) != 0)) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_USAGE;
+    }
     audio a;
     if (read_wav(in, &a) != 0)
         return CLI_USAGE;

@@ -152,8 +152,8 @@ static int level_scale(const scene *s, const render_level *level, float *scale, 
 static SNDFILE *open_wav(const temp_file *out, const scene *s, float scale, char *err,
                          size_t err_size)
 {
-    SNDFILE *wav = audio_wav_open(out->fd, out->path, s->sample_rate_hz, s->channels, err,
-                                  err_size);
+    SNDFILE *wav = audio_wav_open(out->fd, out->path, s->sample_rate_hz, s->channels,
+                                  scene_frame_limit(s), err, err_size);
     if (wav && scale != 1.0f && calibration_write(wav, 1.0 / scale, err, err_size) != 0) {
         sf_close(wav);
         return NULL;
@@ -161,15 +161,40 @@ static SNDFILE *open_wav(const temp_file *out, const scene *s, float scale, char
     return wav;
 }
 
-/* Renders s into out_path (complete, or no file), updating line. The
- * summary line goes to `summary` (NULL: none). */
+/* The --png picture of one scene; file.path NULL: none. */
+typedef struct picture_job {
+    temp_file file;
+    double time_s; /* NAN: the first return stroke */
+    int width, height;
+} picture_job;
+
+/* The picture into its temporary file, when asked for. */
+static int draw(const scene *s, const picture_job *pic, char *err, size_t err_size)
+{
+    if (!pic->file.path)
+        return 0;
+#ifdef FULGUR_HAVE_GPU
+    return render_picture(s, pic->file.temp_path, pic->file.path, pic->time_s, pic->width,
+                          pic->height, err, err_size);
+#else
+    (void)s;
+    snprintf(err, err_size, "--png needs gpu/");
+    return -1;
+#endif
+}
+
+/* Renders s into out_path and draws its picture, into temporary files
+ * committed together: a failure of either leaves neither. Updates line;
+ * the summary line goes to `summary` (NULL: none). */
 static int render_file(const scene *s, const char *out_path, const render_level *level,
-                       FILE *summary, progress *line, render_result *result)
+                       picture_job *pic, FILE *summary, progress *line, render_result *result)
 {
     char err[512];
     uint64_t t0 = monotonic_now_ns();
     wav_sink w = {.s = s, .path = out_path, .line = line};
     if (level_scale(s, level, &w.scale, err, sizeof err) != 0) {
+        if (pic->file.path)
+            temp_file_abort(&pic->file);
         progress_clear(line);
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
@@ -180,6 +205,8 @@ static int render_file(const scene *s, const char *out_path, const render_level 
         if (!w.interleaved)
             snprintf(err, sizeof err, "out of memory");
         free(w.interleaved);
+        if (pic->file.path)
+            temp_file_abort(&pic->file);
         progress_clear(line);
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
@@ -195,9 +222,17 @@ static int render_file(const scene *s, const char *out_path, const render_level 
     }
     free(w.interleaved);
     if (ok)
+        ok = draw(s, pic, err, sizeof err) == 0;
+    if (ok)
         ok = temp_file_commit(&out, err, sizeof err) == 0;
     else
         temp_file_abort(&out);
+    if (pic->file.path) {
+        if (ok)
+            ok = temp_file_commit(&pic->file, err, sizeof err) == 0;
+        else
+            temp_file_abort(&pic->file);
+    }
     if (!ok) {
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_RUNTIME;
@@ -280,19 +315,18 @@ static int render_one(const render_args *a, size_t i, scene *s, char *const *wav
         return CLI_USAGE;
     }
     FILE *summary = a->quiet ? NULL : a->manifest && !strcmp(a->manifest, "-") ? stderr : stdout;
-    render_result result = {0};
-    int rc = render_file(s, wavs[i], &a->level, summary, line, &result);
-#ifdef FULGUR_HAVE_GPU
     bool sized = a->png_size.width != 0;
-    if (rc == CLI_OK && pngs &&
-        render_picture(s, pngs[i], a->png_time, sized ? a->png_size.width : 1280,
-                       sized ? a->png_size.height : 720, err, sizeof err) != 0) {
+    picture_job pic = {.file = {.fd = -1}, .time_s = a->png_time,
+                       .width = sized ? a->png_size.width : 1280,
+                       .height = sized ? a->png_size.height : 720};
+    if (pngs && temp_file_open(&pic.file, pngs[i], err, sizeof err) != 0) {
+        progress_clear(line);
         fprintf(stderr, "fulgur: %s\n", err);
-        rc = CLI_RUNTIME;
+        scene_deinit(s);
+        return CLI_RUNTIME;
     }
-#else
-    (void)pngs;
-#endif
+    render_result result = {0};
+    int rc = render_file(s, wavs[i], &a->level, &pic, summary, line, &result);
     manifest_row row = {a->scenes[i], a->sets.items, a->sets.count, wavs[i], s, result.frames,
                         result.peak, result.scale};
     if (rc == CLI_OK && manifest && manifest_write(manifest, &row) != 0) {
@@ -358,6 +392,19 @@ static int render_all(const render_args *a, scene *scenes, char *const *wavs, ch
         }
     }
     return rc;
+}
+
+/* Refuses (-1 with a message) an output that is a device, FIFO or
+ * directory, or that is one of the scenes read (temp_file_check_output). */
+static int check_outputs(const render_args *a, char *const *wavs, char *const *pngs, char *err,
+                         size_t err_size)
+{
+    for (size_t i = 0; i < a->scene_count; i++)
+        for (size_t k = 0; k < a->scene_count; k++)
+            if (temp_file_check_output(wavs[i], a->scenes[k], err, err_size) != 0 ||
+                (pngs && temp_file_check_output(pngs[i], a->scenes[k], err, err_size) != 0))
+                return -1;
+    return 0;
 }
 
 static int parse_args(int argc, char **argv, render_args *a)
@@ -429,6 +476,9 @@ int render_main(int argc, char **argv)
          (a.png && render_output_paths("--png", a.png, a.scenes, a.scene_count, ".png", pngs,
                                        err, sizeof err) != 0))) {
         fprintf(stderr, "fulgur render: %s\n", err);
+        rc = CLI_USAGE;
+    } else if (rc < 0 && check_outputs(&a, wavs, a.png ? pngs : NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
         rc = CLI_USAGE;
     }
     if (rc < 0)

@@ -32,8 +32,8 @@ static void warn_unlit(const scene *s, double t)
                 t);
 }
 
-int render_picture(const scene *s, const char *path, double time_s, int width, int height,
-                   char *err, size_t err_size)
+int render_picture(const scene *s, const char *path, const char *name, double time_s, int width,
+                   int height, char *err, size_t err_size)
 {
     double t = isnan(time_s) ? picture_first_stroke_s(s) : time_s;
     scene_camera sc;
@@ -60,7 +60,7 @@ int render_picture(const scene *s, const char *path, double time_s, int width, i
     if (rc == 0 && fgg_picture_lit_count(pic, t) == 0)
         warn_unlit(s, t);
     if (rc == 0)
-        printf("%s: the picture at %.6f s (%d x %d)\n", path, t, width, height);
+        printf("%s: the picture at %.6f s (%d x %d)\n", name, t, width, height);
     fgg_picture_destroy(pic);
     fgg_context_destroy(ctx);
     return rc;

@@ -11,9 +11,10 @@
  * earliest emit time), width x height pixels, from the scene's camera or
  * framing the discharge the time belongs to (the latest whose leader has
  * started by then, else the first), and writes a PNG at path (no file on
- * error). Warns on stderr when no discharge is lit at time_s. Returns 0,
- * or -1 with a message in err. */
-int render_picture(const scene *s, const char *path, double time_s, int width, int height,
-                   char *err, size_t err_size);
+ * error); name is the file's final name, for the line it prints. Warns on
+ * stderr when no discharge is lit at time_s. Returns 0, or -1 with a
+ * message in err. */
+int render_picture(const scene *s, const char *path, const char *name, double time_s, int width,
+                   int height, char *err, size_t err_size);
 
 #endif

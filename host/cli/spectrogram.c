@@ -13,16 +13,18 @@
 #include "fg_math.h"
 
 #define MAX_SLICES 400
+#define MAX_WINDOW 65536
 #define BAND_RATIO 1.0293022366434921 /* 2^(1/24): bands at least 1/24 octave wide */
 #define P_REF_PA 20e-6
 #define FLOOR_DB (-20.0)
 
 /* Window length: the power of two at or above 1/12 s (4096 at 48 kHz,
- * ~12 Hz bins: thunder's 20-50 Hz is resolved). */
+ * ~12 Hz bins: thunder's 20-50 Hz is resolved), at most MAX_WINDOW (what
+ * 768 kHz needs): the rate comes from a file's header. */
 static size_t window_length(double rate_hz)
 {
     size_t n = 256;
-    while ((double)n < rate_hz / 12)
+    while ((double)n < rate_hz / 12 && n < MAX_WINDOW)
         n *= 2;
     return n;
 }

@@ -49,8 +49,8 @@ const char *audio_driver_name(audio_driver_kind kind)
 }
 
 int audio_driver_start(audio_driver *d, const audio_output *out, double rate_hz,
-                       uint32_t channels, uint32_t block_frames, float gain, char *err,
-                       size_t err_size)
+                       uint32_t channels, uint32_t block_frames, uint64_t max_frames, float gain,
+                       char *err, size_t err_size)
 {
     audio_driver_kind kind = out->kind;
     const char *path = out->wav_path;
@@ -70,7 +70,7 @@ int audio_driver_start(audio_driver *d, const audio_output *out, double rate_hz,
     }
     if (temp_file_open(&d->file, path, err, err_size) != 0)
         goto fail;
-    d->wav = audio_wav_open(d->file.fd, path, rate_hz, channels, err, err_size);
+    d->wav = audio_wav_open(d->file.fd, path, rate_hz, channels, max_frames, err, err_size);
     if (!d->wav) {
         temp_file_abort(&d->file);
         goto fail;

@@ -17,6 +17,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "audio_file.h"
 #include "options.h"
 #include "temp_file.h"
 
@@ -60,12 +61,14 @@ bool audio_output_is_live(const audio_output *out);
 /* "null", "wav", "raw", "jack", "portaudio" or "auto". */
 const char *audio_driver_name(audio_driver_kind kind);
 
-/* Starts the driver of out for blocks of up to block_frames (a live kind
- * is opened by the command; here it is as null). Returns 0,
- * or -1 with a message in err (nothing is left open). [main-thread] */
+/* Starts the driver of out for blocks of up to block_frames and at most
+ * max_frames in all (AUDIO_FRAMES_UNBOUNDED when not known: a WAV's format
+ * follows, audio_wav_open); a live kind is opened by the command, here it
+ * is as null. Returns 0, or -1 with a message in err (nothing is left
+ * open). [main-thread] */
 int audio_driver_start(audio_driver *d, const audio_output *out, double rate_hz,
-                       uint32_t channels, uint32_t block_frames, float gain, char *err,
-                       size_t err_size);
+                       uint32_t channels, uint32_t block_frames, uint64_t max_frames, float gain,
+                       char *err, size_t err_size);
 
 /* Writes one block of planar samples. Returns 0, or -1 with a message.
  * [audio-thread] of the lock-step modes; the null driver does nothing. */

@@ -20,19 +20,31 @@ float audio_peak(const float *samples, size_t count, float peak)
     return peak;
 }
 
-SNDFILE *audio_wav_open(int fd, const char *path, double rate_hz, uint32_t channels, char *err,
-                        size_t err_size)
+/* Room for the header chunks within a RIFF's 32-bit size. */
+#define RIFF_HEADER_ROOM 4096u
+
+int audio_needs_rf64(uint64_t max_frames, uint32_t channels)
 {
+    uint64_t limit = (UINT32_MAX - RIFF_HEADER_ROOM) / (4u * (uint64_t)channels);
+    return max_frames > limit;
+}
+
+SNDFILE *audio_wav_open(int fd, const char *path, double rate_hz, uint32_t channels,
+                        uint64_t max_frames, char *err, size_t err_size)
+{
+    int rf64 = audio_needs_rf64(max_frames, channels);
     SF_INFO info = {
         .samplerate = (int)rate_hz,
         .channels = (int)channels,
-        .format = SF_FORMAT_WAV | SF_FORMAT_FLOAT,
+        .format = (rf64 ? SF_FORMAT_RF64 : SF_FORMAT_WAV) | SF_FORMAT_FLOAT,
     };
     SNDFILE *wav = sf_open_fd(fd, SFM_WRITE, &info, SF_FALSE);
     if (!wav) {
         snprintf(err, err_size, "%s: %s", path, sf_strerror(NULL));
         return NULL;
     }
+    if (max_frames == AUDIO_FRAMES_UNBOUNDED)
+        sf_command(wav, SFC_RF64_AUTO_DOWNGRADE, NULL, SF_TRUE);
     /* the PEAK chunk carries a timestamp: without it equal renders are
      * byte-identical */
     sf_command(wav, SFC_SET_ADD_PEAK_CHUNK, NULL, SF_FALSE);

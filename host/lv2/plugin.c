@@ -46,6 +46,12 @@ static LV2_Handle instantiate(const LV2_Descriptor *descriptor, double rate_hz,
     /* the host's log if it has one, else stderr */
     LV2_Log_Logger logger;
     lv2_log_logger_init(&logger, map, log);
+    /* the engine's rates; 0 would have silently run at its default 48 kHz */
+    if (!(rate_hz >= FG_SAMPLE_RATE_MIN_HZ && rate_hz <= FG_SAMPLE_RATE_MAX_HZ)) {
+        lv2_log_error(&logger, "fulgur.lv2: a sample rate of %g Hz, outside %g..%g\n", rate_hz,
+                      FG_SAMPLE_RATE_MIN_HZ, FG_SAMPLE_RATE_MAX_HZ);
+        return NULL;
+    }
     if (!map || !schedule) {
         lv2_log_error(&logger, "fulgur.lv2: the host does not provide %s\n",
                       !map ? LV2_URID__map : LV2_WORKER__schedule);

@@ -15,6 +15,9 @@
 #include "smf.h"
 
 #define BLOCK 256
+/* The latest MIDI event a render plays, as a scene's longest duration; the
+ * tail (-t) adds at most as much again. */
+#define RENDER_MAX_EVENT_S 3600.0
 
 static const char about[] =
     "Plays IN.mid through fulgur.lv2 and writes a stereo 32-bit float WAV. SYMBOL=VALUE\n"
@@ -87,12 +90,19 @@ static int set_controls(lv2_host *h, const options *o)
     return 0;
 }
 
+/* The frames rendered: up to the last event (events are in time order),
+ * then the tail. */
+static uint64_t render_frames(const smf_event *ev, size_t count, double rate_hz, double tail_s)
+{
+    double end_s = (count ? ev[count - 1].time_s : 0) + tail_s;
+    return (uint64_t)ceil(end_s * rate_hz);
+}
+
 /* Plays the events block by block into wav. */
 static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz, double tail_s,
                   SNDFILE *wav)
 {
-    double end_s = (count ? ev[count - 1].time_s : 0) + tail_s;
-    uint64_t frames = (uint64_t)ceil(end_s * rate_hz), next = 0;
+    uint64_t frames = render_frames(ev, count, rate_hz, tail_s), next = 0;
     float left[BLOCK], right[BLOCK], frame[2 * BLOCK];
     float *const planes[2] = {left, right};
     for (uint64_t start = 0; start < frames; start += BLOCK) {
@@ -129,10 +139,23 @@ int main(int argc, char **argv)
     if (parsed != 0)
         return parsed > 0 ? 0 : 2;
     char err[512];
+    if (temp_file_check_output(o.out, o.in, err, sizeof err)) {
+        fprintf(stderr, "fulgur-lv2-render: %s\n", err);
+        return 2;
+    }
     smf_event *events;
     size_t count;
     if (smf_read(o.in, &events, &count, err, sizeof err)) {
         fprintf(stderr, "fulgur-lv2-render: %s\n", err);
+        return 2;
+    }
+    /* a few bytes of MIDI (a slow tempo, a long delta) can name any time */
+    if (count && events[count - 1].time_s > RENDER_MAX_EVENT_S) {
+        fprintf(stderr,
+                "fulgur-lv2-render: %s: an event at %.6g s, after the %.0f s a render may "
+                "reach\n",
+                o.in, events[count - 1].time_s, RENDER_MAX_EVENT_S);
+        free(events);
         return 2;
     }
     lv2_host *h = lv2_host_create(o.rate_hz);
@@ -148,7 +171,9 @@ int main(int argc, char **argv)
         free(events);
         return 1;
     }
-    SNDFILE *wav = audio_wav_open(out.fd, o.out, o.rate_hz, 2, err, sizeof err);
+    SNDFILE *wav = audio_wav_open(out.fd, o.out, o.rate_hz, 2,
+                                  render_frames(events, count, o.rate_hz, o.tail_s), err,
+                                  sizeof err);
     int ok = wav && render(h, events, count, o.rate_hz, o.tail_s, wav) == 0;
     if (!wav)
         fprintf(stderr, "fulgur-lv2-render: %s\n", err);

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "common/commands.h"
+#include "common/temp_file.h"
 #include "run_gate.h"
 
 /* --audio jack or portaudio: connects to the device, whose rate (JACK: the
@@ -74,6 +75,19 @@ static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
     cfg.sample_rate_hz = run->rate_hz;
     cfg.max_block_frames = run->block_frames;
     cfg.max_voices = run->opt.voices;
+    cfg.segment_capacity = run->opt.segments;
+    fg_engine_config defaults;
+    if (!cfg.segment_capacity && fg_engine_config_resolve(NULL, &defaults) == FG_OK) {
+        /* as render does, for the trees known before the run */
+        size_t explicit_segments = 0;
+        for (size_t i = 0; i < s->discharge_count; i++)
+            if (!s->discharges[i].generator)
+                explicit_segments += s->discharges[i].post.node_count - 1;
+        if (explicit_segments > defaults.segment_capacity)
+            cfg.segment_capacity = explicit_segments > RUN_MAX_SEGMENTS
+                                       ? RUN_MAX_SEGMENTS
+                                       : (uint32_t)explicit_segments;
+    }
     fg_result r = fg_engine_create(&cfg, &run->engine);
     if (r != FG_OK) {
         snprintf(err, err_size, "engine: %s", fg_result_str(r));
@@ -147,36 +161,42 @@ static int run_threads(run_ctx *run, char *err, size_t err_size)
     return live_failed ? -1 : 0;
 }
 
-static int write_report(const run_ctx *run, double wall_s, char *err, size_t err_size)
+/* Writes the report's text to to (a stream of the report's temporary file,
+ * or stdout/stderr). */
+static int write_report(const run_ctx *run, double wall_s, FILE *to, char *err, size_t err_size)
 {
     char *text = run_report_json(run, wall_s);
     if (!text) {
         snprintf(err, err_size, "out of memory");
         return -1;
     }
-    FILE *to = run->opt.audio.kind == AUDIO_DRIVER_RAW ? stderr : stdout;
-    if (run->opt.report_path && !(to = fopen(run->opt.report_path, "w"))) {
-        snprintf(err, err_size, "%s: cannot create", run->opt.report_path);
-        free(text);
-        return -1;
-    }
-    int bad = fprintf(to, "%s\n", text) < 0;
-    bad |= run->opt.report_path ? fclose(to) != 0 : fflush(to) != 0;
+    int bad = !to || fprintf(to, "%s\n", text) < 0 || fflush(to) != 0;
     free(text);
     if (bad)
         snprintf(err, err_size, "writing the report failed");
     return bad ? -1 : 0;
 }
 
+/* The WAV (if any) and the report file (if any) are written to temporaries
+ * and committed together once the run succeeded: a failure leaves neither. */
 static int run_scene(run_ctx *run)
 {
     char err[512] = "";
+    const char *report_path = run->opt.report_path;
+    temp_file report;
+    if (report_path && temp_file_open(&report, report_path, err, sizeof err) != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_RUNTIME;
+    }
     int rc = CLI_RUNTIME;
     int ok = set_up(run, &rc, err, sizeof err) == 0 &&
              audio_driver_start(&run->driver, &run->opt.audio, run->rate_hz, run->s->channels,
-                                run->block_frames, (float)run->s->gain, err, sizeof err) == 0;
+                                run->block_frames, run->limit_frames, (float)run->s->gain, err,
+                                sizeof err) == 0;
     if (!ok) {
         tear_down(run);
+        if (report_path)
+            temp_file_abort(&report);
         fprintf(stderr, "fulgur: %s\n", err);
         return rc;
     }
@@ -199,13 +219,22 @@ static int run_scene(run_ctx *run)
         snprintf(err, sizeof err, "%s", run->audio_error);
         ok = 0;
     }
+    if (ok && report_path)
+        ok = write_report(run, wall_s, temp_file_stream(&report), err, sizeof err) == 0;
     char stop_err[512];
     if (audio_driver_stop(&run->driver, ok, stop_err, sizeof stop_err) != 0 && ok) {
         snprintf(err, sizeof err, "%s", stop_err);
         ok = 0;
     }
-    if (ok)
-        ok = write_report(run, wall_s, err, sizeof err) == 0;
+    if (report_path) {
+        if (ok)
+            ok = temp_file_commit(&report, err, sizeof err) == 0;
+        else
+            temp_file_abort(&report);
+    } else if (ok) {
+        FILE *to = run->opt.audio.kind == AUDIO_DRIVER_RAW ? stderr : stdout;
+        ok = write_report(run, wall_s, to, err, sizeof err) == 0;
+    }
     tear_down(run);
     if (!ok) {
         fprintf(stderr, "fulgur: %s\n", err);
@@ -221,6 +250,13 @@ int run_main(int argc, char **argv)
     if (parsed != OPTIONS_OK)
         return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
     char err[512];
+    if ((opt.audio.kind == AUDIO_DRIVER_WAV &&
+         temp_file_check_output(opt.audio.wav_path, opt.scene_path, err, sizeof err) != 0) ||
+        (opt.report_path &&
+         temp_file_check_output(opt.report_path, opt.scene_path, err, sizeof err) != 0)) {
+        fprintf(stderr, "fulgur: %s\n", err);
+        return CLI_USAGE;
+    }
     scene s;
     if (scene_load(opt.scene_path, &s, err, sizeof err) != 0) {
         fprintf(stderr, "fulgur: %s\n", err);

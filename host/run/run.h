@@ -49,6 +49,8 @@
 /* The frame thread publishes each tick the head's pose this many ticks
  * ahead (a VR runtime's predicted display time). */
 #define RUN_POSE_LEAD_TICKS 1
+/* The largest segment capacity run asks of the engine (--segments). */
+#define RUN_MAX_SEGMENTS (1u << 24)
 
 typedef struct run_options {
     const char *scene_path;
@@ -58,6 +60,7 @@ typedef struct run_options {
     double seconds;           /* 0: the scene's duration, else until all have sounded */
     double frame_hz;          /* 90 */
     uint32_t voices;          /* 0: the engine's default (64) */
+    uint32_t segments;        /* 0: the engine's default, or the explicit trees' total */
     const char *report_path;  /* NULL: stdout, or stderr when the audio is on stdout */
 } run_options;
 

@@ -36,8 +36,15 @@ options_result run_parse_options(int argc, char **argv, run_options *o)
         {"--report", OPTION_TEXT, &o->report_path, "FILE", .help = "where the JSON report goes"},
         {"--voices", OPTION_INTEGER, &o->voices, "N",
          .help = "the engine's voice pool (default 64)", .range = {.lo = 1, .hi = 4096}},
+        {"--segments", OPTION_INTEGER, &o->segments, "N",
+         .help = "the engine's segment capacity, for all sounding discharges\n"
+                 "together (default: 131072, or the explicit trees' total\n"
+                 "when larger; generated trees are built during the run)",
+         .range = {.lo = 1, .hi = RUN_MAX_SEGMENTS}},
         {"--frame-rate", OPTION_NUMBER, &o->frame_hz, "HZ",
-         .help = "the frame thread's rate (default 90)", .range = {0, 1000, .lo_open = true}},
+         .help = "the frame thread's rate (default 90; at least 10: a head pose\n"
+                 "older than 100 ms, and the last tick's wait, would hold the run)",
+         .range = {.lo = 10, .hi = 1000}},
         {0},
     };
     const command_line cl = {"fulgur run", "SCENE.json", 1, 1, about, notes, table};

@@ -2,177 +2,133 @@
  * "plasma_ball" (the engine's presets) and "field" (grid, shapes and growth
  * from the scene). The JSON is described in docs/generators-field.md. */
 #include <math.h>
-#include <stdarg.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "fg_math.h"
 #include "fulgur/fulgur.h"
 #include "generator.h"
+#include "json_read.h"
 #ifdef FULGUR_HOST_GPU
 #include "generator_field_gpu.h"
 #endif
 
+/* Where messages point: the generator's JSON path and the caller's buffer. */
 typedef struct ctx {
     const char *path;
     char *err;
     size_t err_size;
 } ctx;
 
-static int fail(const ctx *c, const char *field, const char *fmt, ...)
+/* Any finite number; the checks that need more say so after the read. */
+static const number_range any_number = {.lo = -INFINITY, .hi = INFINITY};
+
+/* The path of field (relative, "grid.size") below the generator, in buf. */
+static const char *at(const ctx *c, char buf[JSON_PATH_MAX], const char *field)
 {
-    int n = snprintf(c->err, c->err_size, "%s%s%s: ", c->path, field[0] ? "." : "", field);
-    if (n >= 0 && (size_t)n < c->err_size) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(c->err + n, c->err_size - (size_t)n, fmt, ap);
-        va_end(ap);
-    }
-    return -1;
+    json_path_key(buf, JSON_PATH_MAX, c->path, field);
+    return buf;
 }
 
-/* An optional number: absent leaves *out alone. */
-static int number(const ctx *c, const cJSON *obj, const char *key, const char *field,
-                  double *out)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (!v)
-        return 0;
-    if (!cJSON_IsNumber(v) || !isfinite(v->valuedouble))
-        return fail(c, field, "must be a finite number");
-    *out = v->valuedouble;
-    return 0;
-}
-
-static int integer(const ctx *c, const cJSON *obj, const char *key, const char *field, int lo,
+/* obj[key] at base as an integer in lo..hi; absent leaves *out alone. */
+static int integer(const ctx *c, const cJSON *obj, const char *base, const char *key, int lo,
                    int hi, int *out)
 {
     double d = *out;
-    if (!cJSON_GetObjectItemCaseSensitive(obj, key))
-        return 0;
-    if (number(c, obj, key, field, &d) != 0)
+    if (json_number(obj, base, key, (number_range){.lo = lo, .hi = hi, .integer = true}, &d, c->err,
+                    c->err_size))
         return -1;
-    if (d != floor(d) || d < lo || d > hi)
-        return fail(c, field, "must be an integer in %d..%d", lo, hi);
     *out = (int)d;
     return 0;
 }
 
-static int boolean(const ctx *c, const cJSON *obj, const char *key, const char *field, int *out)
+static int boolean(const ctx *c, const cJSON *obj, const char *base, const char *key, int *out)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (!v)
-        return 0;
-    if (!cJSON_IsBool(v))
-        return fail(c, field, "must be true or false");
-    *out = cJSON_IsTrue(v);
+    bool b = *out != 0;
+    if (json_bool(obj, base, key, &b, c->err, c->err_size))
+        return -1;
+    *out = b;
     return 0;
 }
 
-static int vec3(const ctx *c, const cJSON *obj, const char *key, const char *field, double out[3])
+/* A required [x, y, z]. */
+static int point(const ctx *c, const cJSON *obj, const char *base, const char *key, double out[3])
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (!v)
-        return fail(c, field, "is required: [x, y, z] in metres");
-    if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 3)
-        return fail(c, field, "must be [x, y, z]");
-    for (int a = 0; a < 3; a++) {
-        const cJSON *e = cJSON_GetArrayItem(v, a);
-        if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble))
-            return fail(c, field, "must hold three finite numbers");
-        out[a] = e->valuedouble;
+    char p[JSON_PATH_MAX];
+    if (!cJSON_GetObjectItemCaseSensitive(obj, key)) {
+        json_path_key(p, sizeof p, base, key);
+        return json_fail(c->err, c->err_size, p, "is required: [x, y, z] in metres");
     }
-    return 0;
-}
-
-static int pick_name(const ctx *c, const cJSON *obj, const char *key, const char *field,
-                     const char *const *names, int count, int *out)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (!v)
-        return 0;
-    if (cJSON_IsString(v))
-        for (int i = 0; i < count; i++)
-            if (strcmp(v->valuestring, names[i]) == 0) {
-                *out = i;
-                return 0;
-            }
-    char list[128] = "";
-    for (int i = 0; i < count; i++)
-        snprintf(list + strlen(list), sizeof list - strlen(list), "%s\"%s\"", i ? ", " : "",
-                 names[i]);
-    return fail(c, field, "must be one of %s", list);
+    return json_vec3(obj, base, key, out, c->err, c->err_size);
 }
 
 static int parse_grid(const ctx *c, const cJSON *spec, fg_grid_config *g)
 {
+    char base[JSON_PATH_MAX], p[JSON_PATH_MAX];
     const cJSON *grid = cJSON_GetObjectItemCaseSensitive(spec, "grid");
     if (!cJSON_IsObject(grid))
-        return fail(c, "grid", "is required: {\"size\", \"min\", \"max\"}");
+        return json_fail(c->err, c->err_size, at(c, p, "grid"),
+                         "is required: {\"size\", \"min\", \"max\"}");
+    at(c, base, "grid");
     int size = FG_FIELD_DEFAULT_SIZE;
-    if (integer(c, grid, "size", "grid.size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size) ||
-        vec3(c, grid, "min", "grid.min", g->min_m) ||
-        vec3(c, grid, "max", "grid.max", g->max_m))
+    if (integer(c, grid, base, "size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size) ||
+        point(c, grid, base, "min", g->min_m) || point(c, grid, base, "max", g->max_m))
         return -1;
     for (int a = 0; a < 3; a++) {
         g->size[a] = size;
         if (!(g->max_m[a] > g->min_m[a]))
-            return fail(c, "grid.max", "must exceed grid.min on every axis");
+            return json_fail(c->err, c->err_size, at(c, p, "grid.max"),
+                             "must exceed grid.min on every axis");
     }
     size_t need = fg_field_memory_bytes(g);
     if (need > FG_FIELD_DEFAULT_MAX_BYTES)
-        return fail(c, "grid.size", "needs %zu MiB, more than the limit of %zu MiB", need >> 20,
-                    (size_t)FG_FIELD_DEFAULT_MAX_BYTES >> 20);
+        return json_fail(c->err, c->err_size, at(c, p, "grid.size"),
+                         "needs %zu MiB, more than the limit of %zu MiB", need >> 20,
+                         (size_t)FG_FIELD_DEFAULT_MAX_BYTES >> 20);
     return 0;
 }
 
-/* "field.name" in buf, for messages. */
-static const char *sub(char *buf, size_t size, const char *field, const char *name)
-{
-    snprintf(buf, size, "%s.%s", field, name);
-    return buf;
-}
-
-static int parse_shape(const ctx *c0, const cJSON *j, const char *field, fg_shape *s)
+/* shapes[i], whose path is base. */
+static int parse_shape(const ctx *c, const cJSON *j, const char *base, fg_shape *s)
 {
     static const char *const kinds[] = {"sphere", "box", "plane", "point", "ground"};
     static const char *const roles[] = {"fixed", "origin", "target"};
-    char f[160];
+    char p[JSON_PATH_MAX];
     int kind = -1, role = 0;
-    ctx c = *c0;
     memset(s, 0, sizeof *s);
     if (!cJSON_IsObject(j))
-        return fail(&c, field, "must be an object");
-    if (pick_name(&c, j, "kind", sub(f, sizeof f, field, "kind"), kinds, 5, &kind) ||
-        pick_name(&c, j, "role", sub(f, sizeof f, field, "role"), roles, 3, &role))
+        return json_fail(c->err, c->err_size, base, "must be an object");
+    if (json_name(j, base, "kind", kinds, 5, &kind, c->err, c->err_size) ||
+        json_name(j, base, "role", roles, 3, &role, c->err, c->err_size))
         return -1;
+    json_path_key(p, sizeof p, base, "kind");
     if (kind < 0)
-        return fail(&c, sub(f, sizeof f, field, "kind"), "is required");
+        return json_fail(c->err, c->err_size, p, "is required");
     s->kind = (fg_shape_kind)kind;
     s->role = (fg_shape_role)role;
-    if (number(&c, j, "potential", sub(f, sizeof f, field, "potential"), &s->potential) ||
-        boolean(&c, j, "outside", sub(f, sizeof f, field, "outside"), &s->outside))
+    if (json_number(j, base, "potential", any_number, &s->potential, c->err, c->err_size) ||
+        boolean(c, j, base, "outside", &s->outside))
         return -1;
     switch (s->kind) {
     case FG_SHAPE_SPHERE:
-        if (vec3(&c, j, "center", sub(f, sizeof f, field, "center"), s->centre_m) ||
-            number(&c, j, "radius", sub(f, sizeof f, field, "radius"), &s->radius_m))
+        if (point(c, j, base, "center", s->centre_m) ||
+            json_number(j, base, "radius", any_number, &s->radius_m, c->err, c->err_size))
             return -1;
+        json_path_key(p, sizeof p, base, "radius");
         if (!(s->radius_m > 0.0))
-            return fail(&c, sub(f, sizeof f, field, "radius"), "is required and must be > 0 (metres)");
+            return json_fail(c->err, c->err_size, p, "is required and must be > 0 (metres)");
         break;
     case FG_SHAPE_BOX:
-        if (vec3(&c, j, "min", sub(f, sizeof f, field, "min"), s->box_min_m) ||
-            vec3(&c, j, "max", sub(f, sizeof f, field, "max"), s->box_max_m))
+        if (point(c, j, base, "min", s->box_min_m) || point(c, j, base, "max", s->box_max_m))
             return -1;
         break;
     case FG_SHAPE_PLANE:
-        if (vec3(&c, j, "center", sub(f, sizeof f, field, "center"), s->centre_m) ||
-            vec3(&c, j, "normal", sub(f, sizeof f, field, "normal"), s->normal))
+        if (point(c, j, base, "center", s->centre_m) || point(c, j, base, "normal", s->normal))
             return -1;
         break;
     case FG_SHAPE_POINT:
-        if (vec3(&c, j, "center", sub(f, sizeof f, field, "center"), s->centre_m))
+        if (point(c, j, base, "center", s->centre_m))
             return -1;
         break;
     case FG_SHAPE_GROUND:
@@ -184,35 +140,38 @@ static int parse_shape(const ctx *c0, const cJSON *j, const char *field, fg_shap
 static int parse_growth(const ctx *c, const cJSON *spec, fg_growth_config *g, int *dbm)
 {
     static const char *const models[] = {"matsuyama", "dbm"};
+    char base[JSON_PATH_MAX], p[JSON_PATH_MAX];
     const cJSON *j = cJSON_GetObjectItemCaseSensitive(spec, "growth");
     if (!j)
         return 0;
+    at(c, base, "growth");
     if (!cJSON_IsObject(j))
-        return fail(c, "growth", "must be an object");
-    if (pick_name(c, j, "model", "growth.model", models, 2, dbm) ||
-        number(c, j, "step", "growth.step", &g->step_m) ||
-        number(c, j, "gamma", "growth.gamma", &g->gamma) ||
-        number(c, j, "eta", "growth.eta", &g->eta) ||
-        number(c, j, "cone", "growth.cone", &g->cone_rad) ||
-        number(c, j, "branch_probability", "growth.branch_probability",
-               &g->branch_probability) ||
-        number(c, j, "branch_length", "growth.branch_length", &g->branch_length_m) ||
-        integer(c, j, "candidates", "growth.candidates", 1, FG_GROWTH_MAX_CANDIDATES,
-                &g->candidates) ||
-        integer(c, j, "max_tips", "growth.max_tips", 1, 4096, &g->max_tips) ||
-        integer(c, j, "max_steps", "growth.max_steps", 1, 1 << 24, &g->max_steps) ||
-        boolean(c, j, "all_tips_connect", "growth.all_tips_connect", &g->all_tips_connect))
+        return json_fail(c->err, c->err_size, base, "must be an object");
+    char *err = c->err;
+    size_t size = c->err_size;
+    if (json_name(j, base, "model", models, 2, dbm, err, size) ||
+        json_number(j, base, "step", any_number, &g->step_m, err, size) ||
+        json_number(j, base, "gamma", any_number, &g->gamma, err, size) ||
+        json_number(j, base, "eta", any_number, &g->eta, err, size) ||
+        json_number(j, base, "cone", any_number, &g->cone_rad, err, size) ||
+        json_number(j, base, "branch_probability", any_number, &g->branch_probability, err, size) ||
+        json_number(j, base, "branch_length", any_number, &g->branch_length_m, err, size) ||
+        integer(c, j, base, "candidates", 1, FG_GROWTH_MAX_CANDIDATES, &g->candidates) ||
+        integer(c, j, base, "max_tips", 1, 4096, &g->max_tips) ||
+        integer(c, j, base, "max_steps", 1, 1 << 24, &g->max_steps) ||
+        boolean(c, j, base, "all_tips_connect", &g->all_tips_connect))
         return -1;
     if (!(g->step_m > 0.0))
-        return fail(c, "growth.step", "must be > 0 (metres)");
+        return json_fail(err, size, at(c, p, "growth.step"), "must be > 0 (metres)");
     if (g->gamma < 0.0 || g->eta < 0.0)
-        return fail(c, g->gamma < 0.0 ? "growth.gamma" : "growth.eta", "must be >= 0");
+        return json_fail(err, size, at(c, p, g->gamma < 0.0 ? "growth.gamma" : "growth.eta"),
+                         "must be >= 0");
     if (g->cone_rad < 0.0 || g->cone_rad > FG_PI)
-        return fail(c, "growth.cone", "must be an angle in 0..pi radians");
+        return json_fail(err, size, at(c, p, "growth.cone"), "must be an angle in 0..pi radians");
     if (g->branch_probability < 0.0 || g->branch_probability > 1.0)
-        return fail(c, "growth.branch_probability", "must be in 0..1");
+        return json_fail(err, size, at(c, p, "growth.branch_probability"), "must be in 0..1");
     if (g->branch_length_m < 0.0)
-        return fail(c, "growth.branch_length", "must be >= 0 (metres)");
+        return json_fail(err, size, at(c, p, "growth.branch_length"), "must be >= 0 (metres)");
     return 0;
 }
 
@@ -222,15 +181,18 @@ enum { SOLVER_CPU = 0, SOLVER_GPU = 1 };
 static int parse_solver(const ctx *c, const cJSON *spec, int dbm, int *solver)
 {
     static const char *const names[] = {"cpu", "gpu"};
-    if (pick_name(c, spec, "solver", "solver", names, 2, solver))
+    char p[JSON_PATH_MAX];
+    if (json_name(spec, c->path, "solver", names, 2, solver, c->err, c->err_size))
         return -1;
 #ifndef FULGUR_HOST_GPU
     if (*solver == SOLVER_GPU)
-        return fail(c, "solver", "\"gpu\" needs a fulgur built with gpu/ (FULGUR_GPU=ON)");
+        return json_fail(c->err, c->err_size, at(c, p, "solver"),
+                         "\"gpu\" needs a fulgur built with gpu/ (FULGUR_GPU=ON)");
 #endif
     if (*solver == SOLVER_GPU && dbm)
-        return fail(c, "solver", "\"gpu\" grows Matsuyama leaders only: DBM changes the "
-                                 "field at every step, use \"cpu\"");
+        return json_fail(c->err, c->err_size, at(c, p, "solver"),
+                         "\"gpu\" grows Matsuyama leaders only: DBM changes the field at "
+                         "every step, use \"cpu\"");
     return 0;
 }
 
@@ -238,10 +200,11 @@ static int parse_solver(const ctx *c, const cJSON *spec, int dbm, int *solver)
 static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes, size_t count,
                const fg_growth_config *growth, int dbm, int solver, fg_tree *out)
 {
+    char p[JSON_PATH_MAX];
     fg_field *f = NULL;
     fg_result r = fg_field_create(grid, &f);
     if (r != FG_OK)
-        return fail(c, "grid", "%s", fg_result_str(r));
+        return json_fail(c->err, c->err_size, at(c, p, "grid"), "%s", fg_result_str(r));
     size_t bad = count;
     r = fg_field_set_shapes(f, shapes, count, &bad);
     if (r != FG_OK) {
@@ -249,16 +212,17 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
         if (bad < count) {
             char field[32];
             snprintf(field, sizeof field, "shapes[%zu]", bad);
-            return fail(c, field,
-                        r == FG_ERR_ARGUMENT
-                            ? "covers no node of the grid (outside it?), or its size, normal "
-                              "or potential is invalid"
-                            : "%s",
-                        fg_result_str(r));
+            return json_fail(c->err, c->err_size, at(c, p, field),
+                             r == FG_ERR_ARGUMENT
+                                 ? "covers no node of the grid (outside it?), or its size, normal "
+                                   "or potential is invalid"
+                                 : "%s",
+                             fg_result_str(r));
         }
-        return fail(c, "shapes",
-                    "needs at least one \"origin\" and one \"target\" shape, all origins at one "
-                    "potential and all targets at another");
+        return json_fail(
+            c->err, c->err_size, at(c, p, "shapes"),
+            "needs at least one \"origin\" and one \"target\" shape, all origins at one "
+            "potential and all targets at another");
     }
     fg_solve_report rep = {0};
 #ifdef FULGUR_HOST_GPU
@@ -267,10 +231,11 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
         r = gen_field_gpu_grow(f, growth, out, &rep.residual, msg, sizeof msg);
         fg_field_destroy(f);
         if (r == FG_ERR_UNREACHABLE)
-            return fail(c, "shapes", "the target cannot be reached from the origin");
+            return json_fail(c->err, c->err_size, at(c, p, "shapes"),
+                             "the target cannot be reached from the origin");
         if (r != FG_OK)
-            return fail(c, "solver", "the GPU solve or growth failed: %s (%s)",
-                        fg_result_str(r), msg);
+            return json_fail(c->err, c->err_size, at(c, p, "solver"),
+                             "the GPU solve or growth failed: %s (%s)", fg_result_str(r), msg);
         return 0;
     }
 #else
@@ -288,11 +253,13 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
     }
     fg_field_destroy(f);
     if (r == FG_ERR_NOT_CONVERGED)
-        return fail(c, "grid", "the field solve did not converge (residual %.1e)", rep.residual);
+        return json_fail(c->err, c->err_size, at(c, p, "grid"),
+                         "the field solve did not converge (residual %.1e)", rep.residual);
     if (r == FG_ERR_UNREACHABLE)
-        return fail(c, "shapes", "the target cannot be reached from the origin");
+        return json_fail(c->err, c->err_size, at(c, p, "shapes"),
+                         "the target cannot be reached from the origin");
     if (r != FG_OK)
-        return fail(c, "growth", "%s", fg_result_str(r));
+        return json_fail(c->err, c->err_size, at(c, p, "growth"), "%s", fg_result_str(r));
     return 0;
 }
 
@@ -300,10 +267,12 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
 static int preset_scene(const ctx *c, fg_preset preset, const cJSON *spec, fg_field_scene *s)
 {
     int size = FG_FIELD_DEFAULT_SIZE;
-    if (integer(c, spec, "size", "size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size))
+    char p[JSON_PATH_MAX];
+    if (integer(c, spec, c->path, "size", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE, &size))
         return -1;
     if (fg_field_scene_preset(preset, size, s) != FG_OK)
-        return fail(c, "size", "must be %d..%d", FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE);
+        return json_fail(c->err, c->err_size, at(c, p, "size"), "must be %d..%d",
+                         FG_FIELD_MIN_SIZE, FG_FIELD_MAX_SIZE);
     return 0;
 }
 
@@ -368,16 +337,19 @@ static int parse_field(const ctx *c, const cJSON *spec, fg_grid_config *grid, fg
 {
     if (parse_grid(c, spec, grid))
         return -1;
+    char p[JSON_PATH_MAX], item[JSON_PATH_MAX];
     const cJSON *list = cJSON_GetObjectItemCaseSensitive(spec, "shapes");
     if (!cJSON_IsArray(list) || cJSON_GetArraySize(list) < 2)
-        return fail(c, "shapes", "is required: an array with an origin and a target shape");
+        return json_fail(c->err, c->err_size, at(c, p, "shapes"),
+                         "is required: an array with an origin and a target shape");
     int n = cJSON_GetArraySize(list);
     if (n > FG_FIELD_MAX_SHAPES)
-        return fail(c, "shapes", "at most %d shapes", FG_FIELD_MAX_SHAPES);
+        return json_fail(c->err, c->err_size, at(c, p, "shapes"), "at most %d shapes",
+                         FG_FIELD_MAX_SHAPES);
+    at(c, p, "shapes");
     for (int i = 0; i < n; i++) {
-        char field[32];
-        snprintf(field, sizeof field, "shapes[%d]", i);
-        if (parse_shape(c, cJSON_GetArrayItem(list, i), field, &shapes[i]))
+        json_path_index(item, sizeof item, p, (size_t)i);
+        if (parse_shape(c, cJSON_GetArrayItem(list, i), item, &shapes[i]))
             return -1;
     }
     *count = (size_t)n;
@@ -400,6 +372,7 @@ int gen_field(const cJSON *spec, const char *path, const gen_context *gc, fg_tre
               char *err, size_t err_size)
 {
     ctx c = {path, err, err_size};
+    char p[JSON_PATH_MAX];
     fg_grid_config grid = {0};
     fg_shape shapes[FG_FIELD_MAX_SHAPES];
     size_t count;
@@ -407,7 +380,8 @@ int gen_field(const cJSON *spec, const char *path, const gen_context *gc, fg_tre
         return -1;
     const cJSON *growth = cJSON_GetObjectItemCaseSensitive(spec, "growth");
     if (!cJSON_IsObject(growth) || !cJSON_GetObjectItemCaseSensitive(growth, "step"))
-        return fail(&c, "growth.step", "is required: the segment length in metres");
+        return json_fail(c.err, c.err_size, at(&c, p, "growth.step"),
+                         "is required: the segment length in metres");
     fg_growth_config g = {.seed = gc->seed};
     int dbm = 0, solver = SOLVER_CPU;
     if (parse_growth(&c, spec, &g, &dbm) || parse_solver(&c, spec, dbm, &solver))

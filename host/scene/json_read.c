@@ -115,3 +115,38 @@ int json_vec3(const cJSON *obj, const char *base, const char *key, double out[3]
 {
     return json_vector(obj, base, key, 3, out, err, err_size);
 }
+
+int json_bool(const cJSON *obj, const char *base, const char *key, bool *out, char *err,
+              size_t err_size)
+{
+    const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!item)
+        return 0;
+    if (!cJSON_IsBool(item)) {
+        char path[JSON_PATH_MAX];
+        json_path_key(path, sizeof path, base, key);
+        return json_fail(err, err_size, path, "expected true or false");
+    }
+    *out = cJSON_IsTrue(item);
+    return 0;
+}
+
+int json_name(const cJSON *obj, const char *base, const char *key, const char *const *names,
+              int count, int *out, char *err, size_t err_size)
+{
+    const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!item)
+        return 0;
+    if (cJSON_IsString(item))
+        for (int i = 0; i < count; i++)
+            if (strcmp(item->valuestring, names[i]) == 0) {
+                *out = i;
+                return 0;
+            }
+    char list[256] = "", path[JSON_PATH_MAX];
+    for (int i = 0; i < count; i++)
+        snprintf(list + strlen(list), sizeof list - strlen(list), "%s\"%s\"", i ? ", " : "",
+                 names[i]);
+    json_path_key(path, sizeof path, base, key);
+    return json_fail(err, err_size, path, "expected one of %s", list);
+}

@@ -48,4 +48,13 @@ int json_vector(const cJSON *obj, const char *base, const char *key, int n, doub
 int json_vec3(const cJSON *obj, const char *base, const char *key, double out[3], char *err,
               size_t err_size);
 
+/* Reads obj[key], when present, as true or false. */
+int json_bool(const cJSON *obj, const char *base, const char *key, bool *out, char *err,
+              size_t err_size);
+
+/* Reads obj[key], when present, as one of the count strings in names;
+ * *out gets its index. */
+int json_name(const cJSON *obj, const char *base, const char *key, const char *const *names,
+              int count, int *out, char *err, size_t err_size);
+
 #endif

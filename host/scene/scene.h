@@ -19,6 +19,9 @@
 
 /* Longest scene, and the default length's cap. */
 #define SCENE_MAX_DURATION_S 3600.0
+/* The largest scene file: eight times a 200 000-segment tree's text
+ * (about 8 MiB); a read from a device or a runaway generator stops here. */
+#define SCENE_MAX_FILE_BYTES (64u << 20)
 
 typedef struct scene_pose {
     double time_s;
@@ -74,7 +77,8 @@ typedef struct scene {
 int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err_size);
 
 /* Reads the file at path and parses it; the message of a read error names
- * the file. */
+ * the file. A path that is not a regular file (a device, FIFO, directory)
+ * or a file over SCENE_MAX_FILE_BYTES is refused before it is read. */
 int scene_load(const char *path, scene *out, char *err, size_t err_size);
 
 /* Reads the whole file at path into *text (malloc'ed, the caller frees;

@@ -39,17 +39,20 @@ static int parse_preset(const cJSON *obj, const char *base, scene_discharge *d, 
 static int parse_sound(const cJSON *obj, const char *base, fg_sound_config *p, char *err,
                        size_t err_size)
 {
-    return json_number(obj, base, "T0", (number_range){0, 0.1, .lo_open = true}, &p->t0_s, err,
-                       err_size) ||
-           json_number(obj, base, "r0", (number_range){0, 1000, .lo_open = true}, &p->r0_m, err,
-                       err_size) ||
-           json_number(obj, base, "ps0", (number_range){0, 1e7, .lo_open = true}, &p->ps0_pa, err,
-                       err_size) ||
-           json_number(obj, base, "sigma0", (number_range){.lo = 0, .hi = 10}, &p->sigma0, err,
-                       err_size) ||
+    return json_number(obj, base, "T0",
+                       (number_range){.lo = FG_SOUND_MIN_T0_S, .hi = FG_SOUND_MAX_T0_S}, &p->t0_s,
+                       err, err_size) ||
+           json_number(obj, base, "r0", (number_range){0, FG_SOUND_MAX_R0_M, .lo_open = true},
+                       &p->r0_m, err, err_size) ||
+           json_number(obj, base, "ps0", (number_range){0, FG_SOUND_MAX_PS0_PA, .lo_open = true},
+                       &p->ps0_pa, err, err_size) ||
+           json_number(obj, base, "sigma0", (number_range){.lo = 0, .hi = FG_SOUND_MAX_SIGMA0},
+                       &p->sigma0, err, err_size) ||
            json_number(obj, base, "t0_jitter", (number_range){0, 1, .hi_open = true},
                        &p->t0_jitter, err, err_size) ||
-           json_number(obj, base, "return_stroke_speed", (number_range){0, 3e8, .lo_open = true},
+           json_number(obj, base, "return_stroke_speed",
+                       (number_range){.lo = FG_SOUND_MIN_RETURN_STROKE_M_S,
+                                      .hi = FG_SOUND_MAX_RETURN_STROKE_M_S},
                        &p->return_stroke_speed_m_s, err, err_size) ||
            json_number(obj, base, "ref_half_len", (number_range){.lo = 0, .hi = 1000},
                        &p->ref_half_len_m, err, err_size)
@@ -68,7 +71,7 @@ static int parse_continuous(const cJSON *obj, const char *base, scene_discharge 
     d->post.continuous = 1;
     d->post.repeat_min_s = 0.010;
     d->post.repeat_max_s = 0.050;
-    number_range interval = {0, 10, .lo_open = true};
+    number_range interval = {.lo = FG_REPEAT_MIN_S, .hi = FG_REPEAT_MAX_S};
     if (json_check_keys(item, path, continuous_keys, err, err_size) ||
         json_number(item, path, "min_interval", interval, &d->post.repeat_min_s, err, err_size) ||
         json_number(item, path, "max_interval", interval, &d->post.repeat_max_s, err, err_size) ||

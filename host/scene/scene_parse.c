@@ -1,8 +1,12 @@
 /* The scene's top level: settings, then the listener and the discharges. */
+#define _POSIX_C_SOURCE 200809L /* fdopen */
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "scene_internal.h"
 #include "scene_override.h"
@@ -44,8 +48,9 @@ static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_siz
         json_number(json, "", "seed", SCENE_SEED_RANGE, &seed, err, err_size) ||
         json_number(json, "", "gain", (number_range){0, 1e9, .lo_open = true}, &s->gain, err,
                     err_size) ||
-        json_number(json, "", "speed_of_sound", (number_range){.lo = 100, .hi = 1000}, &speed, err,
-                    err_size) ||
+        json_number(json, "", "speed_of_sound",
+                    (number_range){.lo = FG_SPEED_OF_SOUND_MIN_M_S, .hi = FG_SPEED_OF_SOUND_MAX_M_S},
+                    &speed, err, err_size) ||
         json_number(json, "", "temperature_c", (number_range){.lo = -70, .hi = 60}, &temp, err,
                     err_size) ||
         json_number(json, "", "humidity", (number_range){0, 100, .lo_open = true}, &s->humidity_pct,
@@ -165,13 +170,34 @@ int scene_read_file(const char *path, char **text, size_t *size, char *err, size
 {
     *text = NULL;
     *size = 0;
-    FILE *f = fopen(path, "rb");
+    /* opened without blocking, so that a FIFO cannot stall the check */
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0) {
+        snprintf(err, err_size, "%s: cannot open: %s", path, strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        return -1;
+    }
+    if (!S_ISREG(st.st_mode) || st.st_size > (off_t)SCENE_MAX_FILE_BYTES) {
+        if (S_ISREG(st.st_mode))
+            snprintf(err, err_size, "%s: %lld bytes, more than a scene file may hold (%u MiB)",
+                     path, (long long)st.st_size, SCENE_MAX_FILE_BYTES >> 20);
+        else
+            snprintf(err, err_size, "%s: not a regular file (a device, FIFO or directory)",
+                     path);
+        close(fd);
+        return -1;
+    }
+    FILE *f = fdopen(fd, "rb");
     if (!f) {
         snprintf(err, err_size, "%s: cannot open: %s", path, strerror(errno));
+        close(fd);
         return -1;
     }
     char *buf = NULL;
     size_t n = 0, cap = 0;
+    /* the file may grow while it is read: never past the cap */
     for (;;) {
         if (n == cap) {
             char *grown = fg_array_grow(buf, &cap, n + 1, 1, 65536);
@@ -181,14 +207,15 @@ int scene_read_file(const char *path, char **text, size_t *size, char *err, size
         }
         size_t got = fread(buf + n, 1, cap - n, f);
         n += got;
-        if (got == 0)
+        if (got == 0 || n > SCENE_MAX_FILE_BYTES)
             break;
     }
-    int failed = ferror(f) || n == cap;
+    int failed = ferror(f) || n == cap || n > SCENE_MAX_FILE_BYTES;
     fclose(f);
     if (failed) {
         free(buf);
-        snprintf(err, err_size, "%s: cannot read the file", path);
+        snprintf(err, err_size, "%s: cannot read the file%s", path,
+                 n > SCENE_MAX_FILE_BYTES ? ": it grew past the scene file cap" : "");
         return -1;
     }
     *text = buf;

@@ -63,7 +63,8 @@ static int parse_turbulence(const cJSON *obj, const char *base, fg_propagation_c
                ? json_number(item, path, "amplitude",
                              (number_range){0, 1, .lo_open = true, .hi_open = true},
                              &p->turbulence_s, err, err_size) ||
-                         json_number(item, path, "length", (number_range){0, 1e5, .lo_open = true},
+                         json_number(item, path, "length",
+                                     (number_range){.lo = FG_TURBULENCE_MIN_LENGTH_M, .hi = 1e5},
                                      &p->turbulence_length_m, err, err_size)
                      ? -1
                      : 0

@@ -32,10 +32,20 @@ static int parse_region(const cJSON *item, double lo[3], double hi[3], char *err
         json_vec3(item, "random.region", "min", lo, err, err_size) ||
         json_vec3(item, "random.region", "max", hi, err, err_size))
         return -1;
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 3; k++) {
+        /* a shift beyond the engine's coordinates cannot hold a tree, and
+         * max - min stays finite */
+        if (fabs(lo[k]) > FG_TREE_MAX_COORDINATE_M || fabs(hi[k]) > FG_TREE_MAX_COORDINATE_M)
+            return json_fail(err, err_size, fabs(lo[k]) > FG_TREE_MAX_COORDINATE_M
+                                                ? "random.region.min"
+                                                : "random.region.max",
+                             "coordinate %d (%.16g) is beyond +-%g m", k,
+                             fabs(lo[k]) > FG_TREE_MAX_COORDINATE_M ? lo[k] : hi[k],
+                             FG_TREE_MAX_COORDINATE_M);
         if (lo[k] > hi[k])
             return json_fail(err, err_size, "random.region.min",
                              "above max in coordinate %d (%.16g > %.16g)", k, lo[k], hi[k]);
+    }
     return 0;
 }
 
@@ -62,9 +72,11 @@ static int parse_template(cJSON *json, const cJSON *item, scene *s, scene_discha
     return scene_parse_discharge(copy, "random", 0, s, out, err, err_size);
 }
 
-/* One instance of the template at time t, moved by shift. */
+/* One instance of the template at time t, moved by shift; its tree is
+ * checked again where the shift put it (a generator's is checked when it
+ * is built). Returns -1 with the message in err. */
 static int instantiate(const scene_discharge *tpl, double t, const double shift[3], uint64_t seed,
-                       scene_discharge *out)
+                       scene_discharge *out, char *err, size_t err_size)
 {
     *out = *tpl;
     out->post.emit_time_s = t;
@@ -78,9 +90,16 @@ static int instantiate(const scene_discharge *tpl, double t, const double shift[
     size_t n = tpl->post.node_count;
     fg_node *nodes = malloc(n * sizeof *nodes);
     if (!nodes)
-        return -1;
+        return json_fail(err, err_size, "random", "out of memory");
     memcpy(nodes, tpl->post.nodes, n * sizeof *nodes);
     fg_tree_translate(nodes, n, shift);
+    char why[JSON_PATH_MAX + 128];
+    if (scene_check_tree(nodes, n, "random.tree.nodes", why, sizeof why)) {
+        free(nodes);
+        return json_fail(err, err_size, "random.region",
+                         "a discharge shifted by [%.16g, %.16g, %.16g] is refused: %s", shift[0],
+                         shift[1], shift[2], why);
+    }
     out->post.nodes = nodes;
     out->post.node_count = n;
     return 0;
@@ -149,11 +168,10 @@ int scene_parse_random(cJSON *json, scene *s, char *err, size_t err_size)
         double shift[3];
         for (int k = 0; k < 3; k++)
             shift[k] = lo[k] + (hi[k] - lo[k]) * fg_splitmix64_uniform(&r);
-        if (instantiate(&tpl, t, shift, scene_discharge_seed(own, n),
-                        &s->discharges[base + n]) != 0) {
-            rc = json_fail(err, err_size, "random", "out of memory");
+        rc = instantiate(&tpl, t, shift, scene_discharge_seed(own, n), &s->discharges[base + n],
+                         err, err_size);
+        if (rc != 0)
             break;
-        }
         s->discharge_count = base + ++n;
     }
     scene_discharge_free_tree(&tpl);

@@ -97,8 +97,7 @@ static fg_result run(render_job *job, const scene_render_sink *sink, scene_rende
 {
     const scene *s = job->s;
     double rate = s->sample_rate_hz;
-    uint64_t limit = (uint64_t)llround((s->duration_s > 0 ? s->duration_s : SCENE_MAX_DURATION_S) *
-                                       rate);
+    uint64_t limit = scene_frame_limit(s);
     while (report->frames < limit) {
         uint64_t frame = report->frames;
         double t = (double)frame / rate;
@@ -123,6 +122,12 @@ static fg_result run(render_job *job, const scene_render_sink *sink, scene_rende
     }
     report->capped = s->duration_s == 0;
     return FG_OK;
+}
+
+uint64_t scene_frame_limit(const scene *s)
+{
+    return (uint64_t)llround((s->duration_s > 0 ? s->duration_s : SCENE_MAX_DURATION_S) *
+                             s->sample_rate_hz);
 }
 
 fg_result scene_render(const scene *s, const scene_render_sink *sink,

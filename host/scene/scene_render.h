@@ -39,6 +39,10 @@ typedef struct scene_render_report {
     fg_engine_report engine;   /* the engine's counters at the end */
 } scene_render_report;
 
+/* The most frames scene_render gives for s: its duration, else the
+ * SCENE_MAX_DURATION_S cap. [main-thread] */
+uint64_t scene_frame_limit(const scene *s);
+
 /* Renders s, which scene_build has built, into sink; *report (may be NULL)
  * receives what was rendered, also on an error. Returns FG_OK, or with a
  * message in err: the engine's code when it could not be made for the

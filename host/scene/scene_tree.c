@@ -6,8 +6,9 @@
 
 static const char *const tree_keys[] = {"nodes", NULL};
 
-/* Coordinates are metres; anything beyond 10 000 km is a mistake. */
-static const number_range coordinate = {.lo = -1e7, .hi = 1e7};
+/* Coordinates are metres, within the engine's limit (10 000 km). */
+static const number_range coordinate = {.lo = -FG_TREE_MAX_COORDINATE_M,
+                                        .hi = FG_TREE_MAX_COORDINATE_M};
 static const number_range parent_index = {-1, INT32_MAX, .integer = true};
 static const number_range main_flag = {0, 1, .integer = true};
 

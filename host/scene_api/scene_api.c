@@ -222,7 +222,8 @@ fg_result fgs_wav_write(const char *path, const float *samples, uint64_t frames,
     temp_file out;
     if (temp_file_open(&out, path, msg, msg_size) != 0)
         return FG_ERR_IO;
-    SNDFILE *wav = audio_wav_open(out.fd, path, sample_rate_hz, channels, msg, msg_size);
+    SNDFILE *wav = audio_wav_open(out.fd, path, sample_rate_hz, channels, frames, msg,
+                                  msg_size);
     int ok = wav != NULL;
     if (ok && sf_writef_float(wav, samples, (sf_count_t)frames) != (sf_count_t)frames) {
         snprintf(msg, msg_size, "%s: writing the WAV: %s", path, sf_strerror(wav));

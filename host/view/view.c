@@ -193,7 +193,8 @@ static int view_scene(view *v)
             goto done;
         }
     if (audio_driver_start(&v->driver, &v->opt.audio, v->rate_hz, v->s->channels,
-                           v->block_frames, (float)v->s->gain, err, sizeof err))
+                           v->block_frames, AUDIO_FRAMES_UNBOUNDED, (float)v->s->gain, err,
+                           sizeof err))
         goto done;
     /* a live device's callback takes the audio thread's place */
     bool live = v->live != NULL;

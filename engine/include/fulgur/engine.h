@@ -27,6 +27,26 @@ extern "C" {
 
 typedef struct fg_engine fg_engine;
 
+/* The sample rates the engine accepts, Hz. */
+#define FG_SAMPLE_RATE_MIN_HZ 8000.0
+#define FG_SAMPLE_RATE_MAX_HZ 384000.0
+
+/* The speeds of sound the engine accepts, m/s: every gas a listener
+ * breathes lies inside (air: 290 m/s at -70 degC to 368 m/s at 60 degC). */
+#define FG_SPEED_OF_SOUND_MIN_M_S 100.0
+#define FG_SPEED_OF_SOUND_MAX_M_S 1000.0
+
+/* The per-block work bound (docs/limits.md). A block of n frames may
+ * evaluate at most work_per_frame * n + FG_WORK_BLOCK_FLOOR units across
+ * all voices: one unit is one ear of one event of one instance in that
+ * block (a WM-wave: a few closed-form terms; one of Abe's sources: up to
+ * 32 samples of its series, and one unit more per 32 after). What is left
+ * over is skipped and counted in fg_engine_report.skipped_work; a
+ * continuous repeat due once the block's work is spent is skipped and
+ * counted in skipped_repeats. */
+#define FG_WORK_PER_FRAME_DEFAULT 64u
+#define FG_WORK_BLOCK_FLOOR 4096u
+
 /* Zero in any field means "the default" given in its comment. */
 typedef struct fg_engine_config {
     double sample_rate_hz;        /* 48000; must lie in [8000, 384000] */
@@ -42,6 +62,7 @@ typedef struct fg_engine_config {
     double air_temperature_k;     /* 293.15 (20 degC) */
     double air_humidity_pct;      /* 70; relative humidity in (0, 100] */
     double air_pressure_kpa;      /* 101.325 */
+    uint32_t work_per_frame;      /* FG_WORK_PER_FRAME_DEFAULT; the work bound above, <= 65536 */
 } fg_engine_config;
 
 /* The voice model a discharge is rendered with. */
@@ -57,6 +78,15 @@ typedef enum fg_voice_model {
 /* An emit time meaning "the start of the block that adopts the voice". */
 #define FG_EMIT_NOW (-1.0)
 
+/* A continuous discharge's repeat interval range, s. The shortest: a
+ * channel re-strikes only once the air its last spark heated has
+ * recovered, and Matsuyama ties the interval to the N-wave's length; a
+ * repeat sooner than 0.1 ms (2.5 plasma_ball T0s) would start inside the
+ * previous emission's own wave. It also bounds the repeats one block can
+ * draw: block length / FG_REPEAT_MIN_S. */
+#define FG_REPEAT_MIN_S 1e-4
+#define FG_REPEAT_MAX_S 10.0
+
 typedef struct fg_discharge {
     const fg_node *nodes;   /* borrowed for the duration of fg_engine_post */
     size_t node_count;
@@ -64,7 +94,8 @@ typedef struct fg_discharge {
     double emit_time_s;     /* engine clock, >= 0, or FG_EMIT_NOW */
     uint32_t strokes;       /* 0: drawn from the log-series law; else 1..FG_MAX_STROKES */
     int continuous;         /* non-zero: re-emit the pattern until stopped (plasma ball, held gap) */
-    double repeat_min_s;    /* continuous: interval range, default 0.010 .. 0.050 s */
+    double repeat_min_s;    /* continuous: interval range, default 0.010 .. 0.050 s, within
+                             * [FG_REPEAT_MIN_S, FG_REPEAT_MAX_S] */
     double repeat_max_s;
     double duration_s;      /* continuous: stop after this long; 0 = until fg_engine_stop */
     uint64_t seed;          /* T0 fluctuation, strokes, repeats, turbulence */
@@ -79,9 +110,9 @@ typedef uint64_t fg_voice_id;
  * frame (fg_engine_set_listener); the engine joins them into a continuous
  * path and hears every wave from where the ears are when it arrives. */
 typedef struct fg_listener {
-    double position[3];  /* metres */
-    double forward[3];   /* any length > 0 */
-    double up[3];        /* any length > 0, not parallel to forward */
+    double position[3];  /* metres, each within +-FG_TREE_MAX_COORDINATE_M */
+    double forward[3];   /* any length in [1e-50, 1e50] */
+    double up[3];        /* the same, not parallel to forward */
     double velocity[3];  /* m/s at time_s. All zero while the position changes
                           * from the previous pose means "not known": the
                           * engine takes the chord from that pose */
@@ -99,7 +130,11 @@ typedef struct fg_engine_report {
     uint64_t collected;         /* voices reclaimed by fg_engine_collect */
     uint64_t late_events;       /* events that began before the block that could first play them */
     uint64_t late_samples;      /* per ear, the samples those events lost */
-    uint64_t skipped_repeats;   /* continuous repeats dropped for lack of instance slots */
+    uint64_t skipped_repeats;   /* continuous repeats dropped for lack of instance slots, or
+                                 * due once their block's work was spent */
+    uint64_t skipped_work;      /* work units the per-block bound left undone (above) */
+    uint64_t non_finite_voices; /* voices retired because their sound turned non-finite */
+    uint64_t non_finite_blocks; /* bus blocks zeroed because they held a non-finite sample */
     uint64_t blocks;            /* successful render calls of one frame or more */
     uint64_t blocks_over_budget;/* render calls that took longer than their frames last */
 } fg_engine_report;
@@ -128,8 +163,9 @@ FG_API FG_NODISCARD fg_result fg_engine_config_resolve(const fg_engine_config *c
  * fg_engine_destroy. [main-thread]
  * Errors: FG_ERR_NULL out; FG_ERR_SAMPLE_RATE rate outside [8000, 384000];
  * FG_ERR_NOT_FINITE a NaN/inf field; FG_ERR_ARGUMENT channels not 1 or 2, a
- * negative speed/spacing/look-ahead, block > 65536, voices or segments too
- * large, air outside 200-350 K, (0, 100] %, 10-200 kPa; FG_ERR_NO_MEMORY. */
+ * speed of sound outside [FG_SPEED_OF_SOUND_MIN_M_S, FG_SPEED_OF_SOUND_MAX_M_S],
+ * a negative spacing/look-ahead, block > 65536, voices, segments or work
+ * too large, air outside 200-350 K, (0, 100] %, 10-200 kPa; FG_ERR_NO_MEMORY. */
 FG_API FG_NODISCARD fg_result fg_engine_create(const fg_engine_config *config, fg_engine **out);
 
 /* Frees the engine and every voice, sounding or not. NULL is a no-op. No
@@ -146,10 +182,12 @@ FG_API void fg_engine_get_config(const fg_engine *engine, fg_engine_config *out)
  * discharge and its nodes. *id (may be NULL) receives the voice's id.
  * [sim-thread]
  * Errors: FG_ERR_NULL engine/discharge/nodes; FG_ERR_TREE the tree fails
- * fg_tree_check; FG_ERR_NOT_FINITE / FG_ERR_ARGUMENT a parameter (see
- * fg_sound_config_check and fg_propagation_config_resolve, strokes > FG_MAX_STROKES,
- * negative emit time other than FG_EMIT_NOW, continuous with strokes > 1,
- * repeat range outside (0, 10 s] or min > max, unknown model);
+ * fg_tree_check (its rules and limits); FG_ERR_NOT_FINITE / FG_ERR_ARGUMENT
+ * a parameter (see fg_sound_config_check and fg_propagation_config_resolve,
+ * strokes > FG_MAX_STROKES, negative emit time other than FG_EMIT_NOW,
+ * continuous with strokes > 1, repeat range outside [FG_REPEAT_MIN_S,
+ * FG_REPEAT_MAX_S] or min > max, unknown model); FG_ERR_NOT_FINITE also
+ * when the sound at the listener's pose now comes out non-finite;
  * FG_ERR_CAPACITY more segments than segment_capacity (a ground image
  * counts each segment twice); FG_ERR_POOL_FULL no free voice or segment space now;
  * FG_ERR_QUEUE_FULL the ring to the audio thread is full. On any error
@@ -184,6 +222,10 @@ FG_API size_t fg_engine_collect(fg_engine *engine);
  * listener's displacement d from where the voice was posted: the look-ahead
  * is (d + ear_spacing)/c, capped at max_lookahead_s; events brought forward
  * by more than that are counted as late.
+ * Bounded: the block's work stops at the bound above (FG_WORK_PER_FRAME_DEFAULT),
+ * at most 64 emissions (strokes, repeats) of a voice sound at once, and a voice
+ * whose sound turns non-finite (a pose far out of its model's range) is
+ * retired before it reaches a bus; the output is always finite.
  * [audio-thread] Wait-free; never allocates, locks or prints.
  * Errors: FG_ERR_NULL engine/out/a plane; FG_ERR_BLOCK_SIZE nframes >
  * max_block_frames (the planes are then filled with zeros if out is valid). */
@@ -211,8 +253,9 @@ FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *
  * waits while another is writing, so it is not lock-free among writers.
  * Render never waits: a pose being written as it reads is taken in the
  * next block.
- * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT zero-length or
- * parallel forward/up, negative time. */
+ * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT a position beyond
+ * +-FG_TREE_MAX_COORDINATE_M, a forward or up whose length is outside
+ * [1e-50, 1e50], the two parallel, or a negative time. */
 FG_API FG_NODISCARD fg_result fg_engine_set_listener(fg_engine *engine, const fg_listener *pose);
 
 /* Copies the latest published pose into *out (time_s as stamped); waits

@@ -40,7 +40,8 @@ typedef struct fg_propagation_config {
     double refraction_radius_m;
     /* Turbulence: a smooth, seeded travel-time offset along the channel of
      * at most this many seconds (0 = off; 2 ms is a windy storm's), varying
-     * over the correlation length (0 = 50 m). */
+     * over the correlation length (0 = 50 m; else at least
+     * FG_TURBULENCE_MIN_LENGTH_M). */
     double turbulence_s;
     double turbulence_length_m;
     fg_absorption absorption;
@@ -63,14 +64,19 @@ typedef struct fg_propagation_config {
 /* Defaults a host can offer when an effect is switched on. */
 #define FG_TURBULENCE_DEFAULT_S 0.002
 #define FG_TURBULENCE_DEFAULT_LENGTH_M 50.0
+/* The shortest correlation length: the atmosphere's smallest eddies (the
+ * Kolmogorov scale) are about a millimetre; it also keeps every lattice
+ * coordinate of the noise (position / length) within an int64_t. */
+#define FG_TURBULENCE_MIN_LENGTH_M 1e-3
 #define FG_ABE_FIR_DEFAULT_DISTANCE_M 1000.0
 #define FG_GROUND_DEFAULT_REFLECTION 0.9
 
 /* Checks every field (finite; radius 0 or within the range above;
- * turbulence >= 0 and < 1 s, length >= 0; a known absorption mode; Abe
- * distance >= 0; reflection in [0, 1]) and writes to *out the values a
- * discharge posted with *in is rendered with: the parameters of the
- * effects that are on, with their zeros replaced by the defaults above.
+ * turbulence >= 0 and < 1 s, length 0 or >= FG_TURBULENCE_MIN_LENGTH_M; a
+ * known absorption mode; Abe distance >= 0; reflection in [0, 1]) and
+ * writes to *out the values a discharge posted with *in is rendered with:
+ * the parameters of the effects that are on, with their zeros replaced by
+ * the defaults above.
  * *out is written only on success and may be in. [any-thread]
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT. */
 FG_API FG_NODISCARD fg_result fg_propagation_config_resolve(const fg_propagation_config *in,

@@ -61,8 +61,27 @@ FG_API FG_NODISCARD fg_result fg_preset_get_scale(fg_preset preset, fg_preset_sc
 FG_API const char *fg_preset_name(fg_preset preset);
 FG_API FG_NODISCARD fg_result fg_preset_from_name(const char *name, fg_preset *out);
 
-/* Checks every field: all finite; t0_s, r0_m, ps0_pa > 0; sigma0 >= 0;
- * 0 <= t0_jitter < 1; return_stroke_speed_m_s > 0; ref_half_len_m >= 0.
+/* The ranges fg_sound_config_check accepts (docs/limits.md gives the
+ * reasons): T0 from a tenth of a microsecond (an N-wave shorter than that
+ * has its energy above 1 MHz, beyond hearing and any output rate) to 0.1 s
+ * (a 5 Hz wave); r0 up to 1 km; ps0 up to 1e7 Pa (100 atmospheres);
+ * sigma0 up to 10 (Wright's 0.524 twenty times over); the return stroke
+ * from 1e5 m/s (the stepped leader's pace, the slowest stage of a
+ * discharge) to 3e8 m/s (light). */
+#define FG_SOUND_MIN_T0_S 1e-7
+#define FG_SOUND_MAX_T0_S 0.1
+#define FG_SOUND_MAX_R0_M 1000.0
+#define FG_SOUND_MAX_PS0_PA 1e7
+#define FG_SOUND_MAX_SIGMA0 10.0
+#define FG_SOUND_MIN_RETURN_STROKE_M_S 1e5
+#define FG_SOUND_MAX_RETURN_STROKE_M_S 3e8
+
+/* Checks every field: all finite; t0_s in [FG_SOUND_MIN_T0_S,
+ * FG_SOUND_MAX_T0_S]; r0_m in (0, FG_SOUND_MAX_R0_M]; ps0_pa in
+ * (0, FG_SOUND_MAX_PS0_PA]; sigma0 in [0, FG_SOUND_MAX_SIGMA0];
+ * 0 <= t0_jitter < 1; return_stroke_speed_m_s in
+ * [FG_SOUND_MIN_RETURN_STROKE_M_S, FG_SOUND_MAX_RETURN_STROKE_M_S];
+ * ref_half_len_m >= 0.
  * [any-thread]
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT. */
 FG_API FG_NODISCARD fg_result fg_sound_config_check(const fg_sound_config *config);

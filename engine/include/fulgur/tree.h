@@ -17,6 +17,17 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+/* The engine's limits on a tree's geometry (docs/limits.md), checked by
+ * fg_tree_check:
+ *   every coordinate within +-FG_TREE_MAX_COORDINATE_M: 10 000 km from the
+ *   origin, beyond the Earth's radius (6371 km): no ear hears a discharge
+ *   farther, and every distance and its square stay finite;
+ *   every segment at least FG_TREE_MIN_SEGMENT_M long: 15 times the mean
+ *   free path of air (68 nm at 20 degC and 1 atm), below which the
+ *   continuum acoustics every wave model here rests on means nothing; the
+ *   shortest preset segment (spark_balls, 2 mm) is 2000 times longer. */
+#define FG_TREE_MAX_COORDINATE_M 1e7
+#define FG_TREE_MIN_SEGMENT_M 1e-6
 
 /* Node flags. */
 enum {
@@ -40,16 +51,19 @@ typedef enum fg_tree_fault_kind {
     FG_TREE_FAULT_ROOT,           /* node 0 has a parent, or another node has none */
     FG_TREE_FAULT_PARENT_ORDER,   /* parent is not before the node (would allow cycles) */
     FG_TREE_FAULT_NOT_FINITE,     /* a coordinate is NaN or infinite */
-    FG_TREE_FAULT_ZERO_LENGTH     /* the node coincides with its parent */
+    FG_TREE_FAULT_ZERO_LENGTH,    /* the node coincides with its parent */
+    FG_TREE_FAULT_TOO_FAR,        /* a coordinate beyond +-FG_TREE_MAX_COORDINATE_M */
+    FG_TREE_FAULT_TOO_SHORT       /* its segment is shorter than FG_TREE_MIN_SEGMENT_M */
 } fg_tree_fault_kind;
 
 typedef struct fg_tree_fault {
     fg_tree_fault_kind kind;
     size_t node;        /* index of the offending node */
     int32_t parent;     /* its parent, for FG_TREE_FAULT_PARENT_ORDER */
+    double value;       /* the coordinate (TOO_FAR) or the segment's length (TOO_SHORT), m */
 } fg_tree_fault;
 
-/* Checks a node array against the rules above. On failure fills *fault (if
+/* Checks a node array against the rules and limits above. On failure fills *fault (if
  * not NULL) with the first offending node. Reads only; owns nothing.
  * [any-thread]
  * Errors: FG_ERR_NULL nodes is NULL; FG_ERR_TREE a rule is broken. */

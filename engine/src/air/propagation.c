@@ -15,7 +15,9 @@ fg_result fg_propagation_config_resolve(const fg_propagation_config *in,
         return FG_ERR_NOT_FINITE;
     double r = p->refraction_radius_m;
     if ((r != 0 && (r < FG_REFRACTION_MIN_M || r > FG_REFRACTION_MAX_M)) || p->turbulence_s < 0 ||
-        p->turbulence_s >= 1.0 || p->turbulence_length_m < 0 || p->abe_fir_distance_m < 0 ||
+        p->turbulence_s >= 1.0 ||
+        (p->turbulence_length_m != 0 && p->turbulence_length_m < FG_TURBULENCE_MIN_LENGTH_M) ||
+        p->abe_fir_distance_m < 0 ||
         p->ground_reflection < 0 || p->ground_reflection > 1 ||
         ((unsigned)p->absorption > FG_ABSORPTION_ABE_FIR))
         return FG_ERR_ARGUMENT;

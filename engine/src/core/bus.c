@@ -132,13 +132,29 @@ static bool live(const fg_bus *bus, unsigned b, unsigned ch)
     return is_fir(b) && bus->quiet[ch] < FG_ABE_FIR_HISTORY;
 }
 
-void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
+/* Whether x[0..n) is all finite: x - x is 0 for a finite x, NaN otherwise
+ * (a loop the compiler vectorises). */
+static bool all_finite(const float *x, uint32_t n)
 {
+    float sum = 0.0f;
+    for (uint32_t i = 0; i < n; i++)
+        sum += x[i] - x[i];
+    return sum == 0.0f;
+}
+
+uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
+{
+    uint64_t dropped = 0;
     for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
         for (unsigned ch = 0; ch < s->channels; ch++) {
             fg_bus *bus = &s->bus[b];
             if (b == FG_BUS_DRY && !bus->pre_used[ch]) {
+                /* the first bus into out, which render zeroed */
                 fg_accum_end(&bus->accum[ch], out[ch], 1.0f);
+                if (bus->accum[ch].touched && !all_finite(out[ch], n)) {
+                    memset(out[ch], 0, n * sizeof(float));
+                    dropped++;
+                }
                 continue;
             }
             if (!live(bus, b, ch))
@@ -147,6 +163,11 @@ void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             float *x = bus->pre[ch];
             bus->pre_used[ch] = true; /* zero it again next block */
             fg_accum_end(&bus->accum[ch], x, 1.0f);
+            if (input && !all_finite(x, n)) {
+                memset(x, 0, n * sizeof(float));
+                dropped++;
+                continue;
+            }
             bool tail = false;
             if (is_band(b)) {
                 fg_iir_process(band_filter(s, b, ch), x, n);
@@ -165,4 +186,5 @@ void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
                 out[ch][i] += x[i];
         }
     }
+    return dropped;
 }

@@ -78,8 +78,12 @@ static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
     return &s->bus[b].accum[ch];
 }
 
-/* Filters every bus with input or a ringing tail and adds it to out.
- * [audio-thread] */
-void fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n);
+/* Filters every bus with input or a ringing tail and adds it to out. The
+ * last guard of a finite output: a bus whose block holds a non-finite
+ * sample before its filters is dropped for the block (its filters keep
+ * their state), and an output plane that would hold one is zeroed. Returns
+ * how many blocks of a bus and ear were dropped (0 whenever the models kept
+ * their waves finite). [audio-thread] */
+uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n);
 
 #endif

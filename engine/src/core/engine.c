@@ -12,6 +12,7 @@
 #define MAX_VOICES_LIMIT 65536u
 #define SEGMENT_LIMIT (1u << 26)
 #define SETTING_LIMIT 10.0 /* metres of ear spacing, seconds of look-ahead */
+#define WORK_LIMIT 65536u
 
 /* The defaults, as engine.h documents them. */
 static const fg_engine_config defaults = {
@@ -27,6 +28,7 @@ static const fg_engine_config defaults = {
     .air_temperature_k = 293.15,
     .air_humidity_pct = 70.0,
     .air_pressure_kpa = 101.325,
+    .work_per_frame = FG_WORK_PER_FRAME_DEFAULT,
 };
 
 fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config *out)
@@ -42,11 +44,14 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
         !isfinite(in->air_temperature_k) || !isfinite(in->air_humidity_pct) ||
         !isfinite(in->air_pressure_kpa))
         return FG_ERR_NOT_FINITE;
-    if (in->sample_rate_hz != 0 && (in->sample_rate_hz < 8000 || in->sample_rate_hz > 384000))
+    if (in->sample_rate_hz != 0 && (in->sample_rate_hz < FG_SAMPLE_RATE_MIN_HZ ||
+                                    in->sample_rate_hz > FG_SAMPLE_RATE_MAX_HZ))
         return FG_ERR_SAMPLE_RATE;
     if (in->max_block_frames > MAX_BLOCK_LIMIT || (in->channels != 0 && in->channels > 2) ||
         in->max_voices > MAX_VOICES_LIMIT || in->segment_capacity > SEGMENT_LIMIT ||
-        in->speed_of_sound_m_s < 0 || in->ear_spacing_m < 0 || in->ear_spacing_m > SETTING_LIMIT ||
+        (in->speed_of_sound_m_s != 0 && (in->speed_of_sound_m_s < FG_SPEED_OF_SOUND_MIN_M_S ||
+                                         in->speed_of_sound_m_s > FG_SPEED_OF_SOUND_MAX_M_S)) ||
+        in->ear_spacing_m < 0 || in->ear_spacing_m > SETTING_LIMIT || in->work_per_frame > WORK_LIMIT ||
         in->max_lookahead_s < 0 || in->max_lookahead_s > SETTING_LIMIT ||
         in->max_adopt_per_block > MAX_VOICES_LIMIT ||
         (in->air_temperature_k != 0 && (in->air_temperature_k < 200 || in->air_temperature_k > 350)) ||
@@ -66,6 +71,7 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
         .air_temperature_k = FG_DEF(in->air_temperature_k, defaults.air_temperature_k),
         .air_humidity_pct = FG_DEF(in->air_humidity_pct, defaults.air_humidity_pct),
         .air_pressure_kpa = FG_DEF(in->air_pressure_kpa, defaults.air_pressure_kpa),
+        .work_per_frame = FG_DEF(in->work_per_frame, defaults.work_per_frame),
     };
     return FG_OK;
 }
@@ -212,6 +218,9 @@ void fg_engine_get_report(const fg_engine *e, fg_engine_report *out)
     LOAD(late_events)
     LOAD(late_samples)
     LOAD(skipped_repeats)
+    LOAD(skipped_work)
+    LOAD(non_finite_voices)
+    LOAD(non_finite_blocks)
     LOAD(blocks)
     LOAD(blocks_over_budget)
 #undef LOAD

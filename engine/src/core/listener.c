@@ -4,6 +4,9 @@
 #include "fg_vec3.h"
 #include "listener_internal.h"
 
+#define FG_LISTENER_MIN_LENGTH 1e-50
+#define FG_LISTENER_MAX_LENGTH 1e50
+
 static void pack(const fg_listener *p, uint64_t w[FG_POSE_WORDS])
 {
     const double *v[4] = {p->position, p->forward, p->up, p->velocity};
@@ -43,12 +46,19 @@ fg_result fg_listener_check(const fg_listener *p)
     }
     if (p->time_s < 0)
         return FG_ERR_ARGUMENT;
+    for (int k = 0; k < 3; k++)
+        if (fabs(p->position[k]) > FG_TREE_MAX_COORDINATE_M)
+            return FG_ERR_ARGUMENT;
     fg_vec3 forward = fg_v3_load(p->forward), up = fg_v3_load(p->up);
     double f = fg_v3_len(forward), u = fg_v3_len(up);
-    if (f == 0 || u == 0)
+    /* lengths whose squares are normal numbers: the audio thread flushes
+     * denormals, and the ears are a cross product of the two (its square
+     * stays within 1e-206 .. 1e200) */
+    if (!(f >= FG_LISTENER_MIN_LENGTH && f <= FG_LISTENER_MAX_LENGTH) ||
+        !(u >= FG_LISTENER_MIN_LENGTH && u <= FG_LISTENER_MAX_LENGTH))
         return FG_ERR_ARGUMENT;
     /* parallel within about 0.06 degrees */
-    if (fg_v3_len(fg_v3_cross(forward, up)) < 1e-3 * f * u)
+    if (fg_v3_len(fg_v3_cross(fg_v3_scale(forward, 1 / f), fg_v3_scale(up, 1 / u))) < 1e-3)
         return FG_ERR_ARGUMENT;
     return FG_OK;
 }

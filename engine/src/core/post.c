@@ -34,7 +34,8 @@ fg_result fg_engine_post_source(fg_engine *e, const fg_source_ops *ops, const vo
     fg_post_context post = {&e->cfg, &pose, 2 * number + 1, &e->buses, k->storage};
     fg_result r = ops->prepare(ops, state, desc, &post);
     if (r != FG_OK) {
-        fg_count(&e->counters.dropped_posts, 1);
+        if (r == FG_ERR_POOL_FULL)
+            fg_count(&e->counters.dropped_posts, 1);
         return r;
     }
     e->free_count--;

@@ -46,6 +46,7 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
     fg_ears ears;
     fg_head_ears(&head, e->cfg.channels, e->cfg.ear_spacing_m, &ears);
     fg_bus_set_begin(&e->buses, nframes);
+    uint64_t work_left = (uint64_t)e->cfg.work_per_frame * nframes + FG_WORK_BLOCK_FLOOR;
     fg_block_context block = {
         .cfg = &e->cfg,
         .start_frame = (double)start,
@@ -56,6 +57,7 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
         .serial = fg_trajectory_serial(&e->trajectory),
         .buses = &e->buses,
         .counters = &e->counters,
+        .work_left = &work_left,
     };
 
     fg_voice *adopted;
@@ -77,7 +79,9 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
             i++;
         }
     }
-    fg_bus_set_end(&e->buses, out, nframes);
+    uint64_t dropped = fg_bus_set_end(&e->buses, out, nframes);
+    if (dropped)
+        fg_count(&e->counters.non_finite_blocks, dropped);
 
     atomic_store_explicit(&e->frames, start + nframes, memory_order_release);
     fg_count(&e->counters.blocks, 1);

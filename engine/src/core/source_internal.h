@@ -45,7 +45,8 @@
 /* What the audio thread reports, as atomic counters other threads read. */
 typedef struct fg_counters {
     atomic_uint_least64_t posted, dropped_posts, adopted, finished, collected;
-    atomic_uint_least64_t late_events, late_samples, skipped_repeats, blocks, blocks_over_budget;
+    atomic_uint_least64_t late_events, late_samples, skipped_repeats, skipped_work;
+    atomic_uint_least64_t non_finite_voices, non_finite_blocks, blocks, blocks_over_budget;
 } fg_counters;
 
 /* Adds n to a counter (relaxed: the counters order nothing). */
@@ -77,7 +78,10 @@ typedef struct fg_block_context {
     const double *position;
     uint64_t serial;            /* fg_trajectory_serial: changes when the trajectory does */
     fg_bus_set *buses;
-    fg_counters *counters;      /* late events and samples, skipped repeats */
+    fg_counters *counters;      /* late events and samples, skipped repeats and work */
+    uint64_t *work_left;        /* the block's work bound: units not yet spent
+                                 * (fg_engine_config.work_per_frame); a model
+                                 * stops adding once it is 0 and counts the rest */
 } fg_block_context;
 
 /* A kind of source: the storage its voices need. */
@@ -103,7 +107,8 @@ struct fg_source_ops {
      * model's description, which the public post function has validated.
      * Takes what it needs from post->storage; on error takes nothing and
      * leaves the engine as it was. [sim-thread]
-     * Errors: FG_ERR_POOL_FULL no room in the kind's storage now. */
+     * Errors: FG_ERR_POOL_FULL no room in the kind's storage now;
+     * FG_ERR_NOT_FINITE the description gives no finite sound. */
     fg_result (*prepare)(const fg_source_ops *ops, void *voice, const void *desc,
                          const fg_post_context *post);
     /* The block that takes the voice up, before its first render.
@@ -111,8 +116,10 @@ struct fg_source_ops {
     void (*adopt)(void *voice, const fg_block_context *block);
     /* Adds the voice's sound in this block into block->buses; returns true
      * when it has finished (nothing more to play, ever). stopping: the sim
-     * thread has called fg_engine_stop on it. Bounded, no allocation, no
-     * lock. [audio-thread] */
+     * thread has called fg_engine_stop on it. A value that would turn
+     * non-finite is never added: the voice counts itself in
+     * counters->non_finite_voices and returns true. Bounded (work_left),
+     * no allocation, no lock. [audio-thread] */
     bool (*render)(void *voice, bool stopping, const fg_block_context *block);
     /* Gives back what prepare took from the storage, once the voice is
      * retired. May be NULL. [sim-thread] */
@@ -142,7 +149,7 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
  * Errors: FG_ERR_UNSUPPORTED the engine was not created with ops->kind;
  * FG_ERR_QUEUE_FULL the ring to the audio thread is full; FG_ERR_POOL_FULL
  * no free voice, or prepare's error. On any error nothing changes but the
- * dropped_posts counter (not for FG_ERR_UNSUPPORTED). */
+ * dropped_posts counter, for a full pool or queue. */
 fg_result fg_engine_post_source(fg_engine *engine, const fg_source_ops *ops, const void *desc,
                                 fg_voice_id *id);
 

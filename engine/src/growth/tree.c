@@ -14,42 +14,69 @@ struct fg_tree {
     size_t capacity;
 };
 
-static fg_result fault(fg_tree_fault *out, fg_tree_fault_kind kind, size_t node, int32_t parent)
+static fg_result fault(fg_tree_fault *out, fg_tree_fault_kind kind, size_t node, int32_t parent,
+                       double value)
 {
-    if (out) {
-        out->kind = kind;
-        out->node = node;
-        out->parent = parent;
-    }
+    if (out)
+        *out = (fg_tree_fault){kind, node, parent, value};
     return FG_ERR_TREE;
+}
+
+/* The coordinate of n farthest from the origin. */
+static double farthest_coordinate(const fg_node *n)
+{
+    double c = n->x;
+    if (fabs(n->y) > fabs(c))
+        c = n->y;
+    if (fabs(n->z) > fabs(c))
+        c = n->z;
+    return c;
+}
+
+/* |a - b|, scaled by the largest difference so that no square underflows:
+ * a segment of 1e-162 m measures 1e-162 m, not 0. */
+static double segment_length(const fg_node *a, const fg_node *b)
+{
+    double d[3] = {a->x - b->x, a->y - b->y, a->z - b->z};
+    double m = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
+    if (m == 0)
+        return 0;
+    double x = d[0] / m, y = d[1] / m, z = d[2] / m;
+    return m * sqrt(x * x + y * y + z * z);
 }
 
 fg_result fg_tree_check(const fg_node *nodes, size_t count, fg_tree_fault *out)
 {
     if (out)
-        *out = (fg_tree_fault){FG_TREE_FAULT_NONE, 0, 0};
+        *out = (fg_tree_fault){FG_TREE_FAULT_NONE, 0, 0, 0};
     if (!nodes)
         return FG_ERR_NULL;
     if (count < 2)
-        return fault(out, FG_TREE_FAULT_TOO_FEW_NODES, count, -1);
+        return fault(out, FG_TREE_FAULT_TOO_FEW_NODES, count, -1, 0);
     for (size_t i = 0; i < count; i++) {
         const fg_node *n = &nodes[i];
         if (!isfinite(n->x) || !isfinite(n->y) || !isfinite(n->z))
-            return fault(out, FG_TREE_FAULT_NOT_FINITE, i, n->parent);
+            return fault(out, FG_TREE_FAULT_NOT_FINITE, i, n->parent, 0);
+        double far = farthest_coordinate(n);
+        if (fabs(far) > FG_TREE_MAX_COORDINATE_M)
+            return fault(out, FG_TREE_FAULT_TOO_FAR, i, n->parent, far);
         if (i == 0) {
             if (n->parent != -1)
-                return fault(out, FG_TREE_FAULT_ROOT, i, n->parent);
+                return fault(out, FG_TREE_FAULT_ROOT, i, n->parent, 0);
             continue;
         }
         if (n->parent < 0 && n->parent != -1)
-            return fault(out, FG_TREE_FAULT_PARENT_ORDER, i, n->parent);
+            return fault(out, FG_TREE_FAULT_PARENT_ORDER, i, n->parent, 0);
         if (n->parent == -1)
-            return fault(out, FG_TREE_FAULT_ROOT, i, n->parent);
+            return fault(out, FG_TREE_FAULT_ROOT, i, n->parent, 0);
         if ((size_t)n->parent >= i)
-            return fault(out, FG_TREE_FAULT_PARENT_ORDER, i, n->parent);
+            return fault(out, FG_TREE_FAULT_PARENT_ORDER, i, n->parent, 0);
         const fg_node *p = &nodes[n->parent];
         if (p->x == n->x && p->y == n->y && p->z == n->z)
-            return fault(out, FG_TREE_FAULT_ZERO_LENGTH, i, n->parent);
+            return fault(out, FG_TREE_FAULT_ZERO_LENGTH, i, n->parent, 0);
+        double len = segment_length(n, p);
+        if (len < FG_TREE_MIN_SEGMENT_M)
+            return fault(out, FG_TREE_FAULT_TOO_SHORT, i, n->parent, len);
     }
     return FG_OK;
 }
@@ -86,6 +113,14 @@ void fg_tree_fault_describe(const fg_tree_fault *f, char *buf, size_t size)
     case FG_TREE_FAULT_ZERO_LENGTH:
         snprintf(buf, size, "node %zu lies on its parent %d (zero-length segment)", f->node,
                  (int)f->parent);
+        break;
+    case FG_TREE_FAULT_TOO_FAR:
+        snprintf(buf, size, "node %zu has a coordinate of %.6g m, beyond +-%.0e m", f->node,
+                 f->value, FG_TREE_MAX_COORDINATE_M);
+        break;
+    case FG_TREE_FAULT_TOO_SHORT:
+        snprintf(buf, size, "node %zu is %.3g m from its parent %d, closer than %.0e m",
+                 f->node, f->value, (int)f->parent, FG_TREE_MIN_SEGMENT_M);
         break;
     default:
         snprintf(buf, size, "unknown fault");

@@ -28,6 +28,13 @@ static double abe_start_s(const fg_event *ev, const fg_event_ear *ear, double c_
     return ear->abe.arrival_s;
 }
 
+static bool abe_finite(const fg_event *ev, const fg_event_ear *ear, double fs_hz, double c_m_s)
+{
+    (void)ev;
+    (void)c_m_s;
+    return fg_abe_wave_in_range(&ear->abe, fs_hz);
+}
+
 static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
                               const fg_event_play *play, long *first, long *last)
 {
@@ -35,6 +42,8 @@ static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
     const double fs = play->fs_hz;
     fg_abe_wave w = ear->abe;
     w.arrival_s += play->offset_s + play->origin_frame / fs;
+    if (!fg_abe_wave_in_range(&w, fs))
+        return FG_WAVE_NON_FINITE;
     int64_t a, b;
     fg_abe_wave_span(&w, fs, &a, &b);
     *first = (long)a;
@@ -49,7 +58,8 @@ static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
             continue;
         w.peak_pa = peak * play->share[k];
         float *out = fg_bus_pre(play->buses, play->bus + k * FG_BUS_PLAIN, play->ch);
-        fg_abe_wave_render(&w, fs, 0, out, play->frames);
+        if (!fg_abe_wave_render(&w, fs, 0, out, play->frames))
+            return FG_WAVE_NON_FINITE;
     }
     return FG_WAVE_SOUNDING;
 }
@@ -63,6 +73,8 @@ static const fg_discharge_model abe_model = {
     .stride = abe_stride,
     .wave = abe_wave,
     .start_s = abe_start_s,
+    .finite = abe_finite,
+    .samples_per_unit = 32, /* its series, sample by sample */
 };
 
 const fg_source_ops fg_source_abe = {

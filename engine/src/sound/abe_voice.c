@@ -37,6 +37,18 @@ void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_config *p, const double src[3
     w->harmonics = p->harmonics;
 }
 
+/* Sample indices beyond 2^62 are no block's. */
+#define SAMPLE_INDEX_LIMIT 4.6e18
+
+bool fg_abe_wave_in_range(const fg_abe_wave *w, double fs_hz)
+{
+    if (!isfinite(w->arrival_s) || !isfinite(w->f0_hz) || !isfinite(w->peak_pa) ||
+        !isfinite(w->gamma) || !(w->freq_decay_s > 0) || !(w->amp_decay_s > 0) ||
+        !(w->duration_s >= 0) || !isfinite(w->duration_s))
+        return false;
+    return fabs(w->arrival_s * fs_hz) + w->duration_s * fs_hz < SAMPLE_INDEX_LIMIT;
+}
+
 void fg_abe_wave_span(const fg_abe_wave *w, double fs_hz, int64_t *first, int64_t *last)
 {
     *first = (int64_t)ceil(w->arrival_s * fs_hz);
@@ -67,7 +79,7 @@ static double pressure(const fg_abe_wave *w, double t_s, double nyquist_hz)
     return w->peak_pa * exp(-t_s / w->amp_decay_s) * (2.0 / FG_PI) * sum;
 }
 
-void fg_abe_wave_render(const fg_abe_wave *w, double fs_hz, int64_t block_start, float *out,
+bool fg_abe_wave_render(const fg_abe_wave *w, double fs_hz, int64_t block_start, float *out,
                         size_t n)
 {
     int64_t first, last;
@@ -75,7 +87,11 @@ void fg_abe_wave_render(const fg_abe_wave *w, double fs_hz, int64_t block_start,
     int64_t lo = first > block_start ? first : block_start;
     int64_t hi = block_start + (int64_t)n - 1;
     hi = last < hi ? last : hi;
-    for (int64_t k = lo; k <= hi; k++)
-        out[k - block_start] +=
-            (float)pressure(w, ((double)k / fs_hz - w->arrival_s) / w->rate, 0.5 * fs_hz);
+    for (int64_t k = lo; k <= hi; k++) {
+        float p = (float)pressure(w, ((double)k / fs_hz - w->arrival_s) / w->rate, 0.5 * fs_hz);
+        if (!isfinite(p))
+            return false;
+        out[k - block_start] += p;
+    }
+    return true;
 }

@@ -31,6 +31,7 @@
 #ifndef FULGUR_ABE_VOICE_INTERNAL_H
 #define FULGUR_ABE_VOICE_INTERNAL_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -75,14 +76,20 @@ typedef struct fg_abe_wave {
 void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_config *p, const double src[3],
                       const double ear[3], double emit_s, double c_m_s);
 
+/* Whether w's numbers are finite and its span's sample indices fit an
+ * int64_t at fs_hz: what fg_abe_wave_span and fg_abe_wave_render need. */
+bool fg_abe_wave_in_range(const fg_abe_wave *w, double fs_hz);
+
 /* First and last sample (absolute index, sample k at time k / fs) that the
- * wave touches. */
+ * wave touches (w in range). */
 void fg_abe_wave_span(const fg_abe_wave *w, double fs_hz, int64_t *first, int64_t *last);
 
-/* Adds the wave's samples block_start .. block_start + n - 1 into out.
+/* Adds the wave's samples block_start .. block_start + n - 1 into out (w in
+ * range). Returns false, having stopped before the first non-finite
+ * sample, if one is not finite.
  * [audio-thread]: no allocation; cost per sample inside the span is one
  * sine, one cosine, three exponentials and a few operations per harmonic. */
-void fg_abe_wave_render(const fg_abe_wave *w, double fs_hz, int64_t block_start, float *out,
+bool fg_abe_wave_render(const fg_abe_wave *w, double fs_hz, int64_t block_start, float *out,
                         size_t n);
 
 #endif

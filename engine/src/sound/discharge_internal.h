@@ -98,6 +98,13 @@ typedef struct fg_discharge_model {
                  fg_event_ear *ear);
     /* When an ear's wave of ev starts sounding, seconds after the emission. */
     double (*start_s)(const fg_event *ev, const fg_event_ear *ear, double c_m_s);
+    /* Whether an ear's wave of ev has finite numbers at fs_hz and c_m_s
+     * (the post refuses a discharge whose wave has not). */
+    bool (*finite)(const fg_event *ev, const fg_event_ear *ear, double fs_hz, double c_m_s);
+    /* The work bound's charge (fg_engine_config.work_per_frame): one unit
+     * per ear evaluated, and one more per this many samples it sounds in
+     * the block; 0: one unit whatever its length. */
+    uint32_t samples_per_unit;
 } fg_discharge_model;
 
 typedef struct fg_instance {
@@ -129,6 +136,7 @@ typedef struct fg_discharge_voice {
     fg_instance inst[FG_MAX_INSTANCES];
     uint32_t inst_count;
     double next_repeat_s;      /* continuous: next emission; < 0 once ended */
+    bool non_finite;           /* a wave turned non-finite: the voice is retired */
 } fg_discharge_voice;
 
 /* Scratch for preparing one tree, preallocated for the largest. */
@@ -165,7 +173,8 @@ void fg_discharge_repeat_range(const fg_discharge *d, double *min_s, double *max
 void fg_discharge_release(void *voice, void *storage);
 
 /* discharge_prepare.c: fills the voice from a checked discharge.
- * [sim-thread] Errors: FG_ERR_POOL_FULL no segment space now. */
+ * [sim-thread] Errors: FG_ERR_POOL_FULL no segment space now;
+ * FG_ERR_NOT_FINITE a wave at the pose now is not finite. */
 fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void *desc,
                                const fg_post_context *post);
 

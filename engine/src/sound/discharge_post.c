@@ -9,7 +9,6 @@
 
 #define REPEAT_MIN_DEFAULT_S 0.010
 #define REPEAT_MAX_DEFAULT_S 0.050
-#define REPEAT_LIMIT_S 10.0
 
 /* The source model of each fg_voice_model: the only place that names them. */
 static const fg_source_ops *const models[] = {
@@ -45,8 +44,8 @@ fg_result fg_discharge_check(const fg_discharge *d)
         return FG_OK;
     double lo, hi;
     fg_discharge_repeat_range(d, &lo, &hi);
-    if (d->strokes > 1 || d->repeat_min_s < 0 || d->repeat_max_s < 0 || lo > hi ||
-        hi > REPEAT_LIMIT_S || d->duration_s < 0)
+    if (d->strokes > 1 || lo < FG_REPEAT_MIN_S || lo > hi || hi > FG_REPEAT_MAX_S ||
+        d->duration_s < 0)
         return FG_ERR_ARGUMENT;
     return FG_OK;
 }

@@ -164,13 +164,20 @@ fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void
             image_event(ev, pr->ground_reflection, &v->events[m++]);
     }
     v->event_count = m;
+    const double c = cfg->speed_of_sound_m_s;
     for (uint32_t k = 0; k < m; k++) {
         fg_event *ev = &v->events[k];
         ev->serial = post->pose_serial;
         ev->start_s = INFINITY;
+        bool finite = isfinite(ev->emit_s);
         for (unsigned j = 0; j < ears.count; j++) {
-            fg_event_geometry(v, ev, &ears, (int)j, cfg->speed_of_sound_m_s, post->buses);
-            ev->start_s = fmin(ev->start_s, model->start_s(ev, &ev->ear[j], cfg->speed_of_sound_m_s));
+            fg_event_geometry(v, ev, &ears, (int)j, c, post->buses);
+            ev->start_s = fmin(ev->start_s, model->start_s(ev, &ev->ear[j], c));
+            finite = finite && model->finite(ev, &ev->ear[j], cfg->sample_rate_hz, c);
+        }
+        if (!finite || !isfinite(ev->start_s)) {
+            fg_arena_free(&store->arena, extent, fg_discharge_events(d, model));
+            return FG_ERR_NOT_FINITE;
         }
     }
     sort_by_start(v->events, v->event_count, s);

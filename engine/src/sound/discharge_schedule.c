@@ -11,6 +11,7 @@ void fg_discharge_adopt(void *voice, const fg_block_context *block)
     v->emit_frame = v->emit_time_s == FG_EMIT_NOW ? block->start_frame
                                                   : v->emit_time_s * block->cfg->sample_rate_hz;
     v->inst_count = 0;
+    v->non_finite = false;
     for (uint32_t k = 0; k < v->strokes; k++)
         v->inst[v->inst_count++] = (fg_instance){v->stroke_offset_s[k], 0, 0, k > 0};
     v->next_repeat_s =
@@ -44,6 +45,11 @@ static double look_ahead_s(const fg_block_context *ctx, const fg_discharge_voice
     return m < cfg->max_lookahead_s ? m : cfg->max_lookahead_s;
 }
 
+/* The repeats due before the block's end. The loop draws at most block
+ * length / FG_REPEAT_MIN_S + 1 intervals (fg_engine_post refuses shorter
+ * ones), and ends the repeats should an interval ever stop advancing the
+ * clock (after 2^53 of them). A repeat finds no instance slot, or a block
+ * whose work is already spent: it is skipped and counted. */
 static void spawn_repeats(fg_discharge_voice *v, const fg_discharge_block *vb)
 {
     double first_start = v->events[0].start_s;
@@ -52,11 +58,12 @@ static void spawn_repeats(fg_discharge_voice *v, const fg_discharge_block *vb)
             v->next_repeat_s = -1.0;
             break;
         }
-        if (v->inst_count < FG_MAX_INSTANCES)
+        if (v->inst_count < FG_MAX_INSTANCES && *vb->ctx->work_left > 0)
             v->inst[v->inst_count++] = (fg_instance){v->next_repeat_s, 0, 0, false};
         else
             fg_count(&vb->ctx->counters->skipped_repeats, 1);
-        v->next_repeat_s += fg_rng_range(&v->rng, v->repeat_min_s, v->repeat_max_s);
+        double next = v->next_repeat_s + fg_rng_range(&v->rng, v->repeat_min_s, v->repeat_max_s);
+        v->next_repeat_s = next > v->next_repeat_s ? next : -1.0;
     }
 }
 

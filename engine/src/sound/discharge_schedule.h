@@ -60,7 +60,24 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg
     return add(ev, ear, play, first, last);
 }
 
-/* Renders one instance; returns true once all its events are done. */
+/* Spends the work of one ear evaluated with status st over samples
+ * first .. last of the block (fg_discharge_model.samples_per_unit). */
+static inline void fg_discharge_charge(const fg_block_context *ctx, const fg_discharge_model *m,
+                                       fg_wave_status st, long first, long last)
+{
+    uint64_t cost = 1;
+    if (m->samples_per_unit && st == FG_WAVE_SOUNDING) {
+        long a = first < 0 ? 0 : first;
+        long b = last >= (long)ctx->frames ? (long)ctx->frames - 1 : last;
+        if (b >= a)
+            cost += (uint64_t)(b - a) / m->samples_per_unit;
+    }
+    *ctx->work_left = cost < *ctx->work_left ? *ctx->work_left - cost : 0;
+}
+
+/* Renders one instance; returns true once all its events are done. Stops
+ * when the block's work is spent (what is left is counted) or a wave is
+ * not finite (v->non_finite). */
 static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instance *in,
                                                 const fg_discharge_block *vb,
                                                 fg_discharge_add_fn add)
@@ -83,17 +100,22 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
     /* the instance's emission on the engine clock, seconds */
     const double emission_s = (v->emit_frame / play.fs_hz) + in->offset_s;
     uint64_t late = 0, lost = 0;
+    const unsigned ears = ctx->ears->count;
     for (uint32_t k = in->lo; k < in->hi; k++) {
+        if (*ctx->work_left == 0) {
+            fg_count(&ctx->counters->skipped_work, (uint64_t)(in->hi - k) * ears);
+            break;
+        }
         fg_event *ev = fg_instance_event(v, in, k);
         if (!vb->moving && ev->serial != ctx->serial) {
-            for (unsigned ch = 0; ch < ctx->ears->count; ch++)
+            for (unsigned ch = 0; ch < ears; ch++)
                 fg_event_geometry(v, ev, ctx->ears, (int)ch, ctx->cfg->speed_of_sound_m_s,
                                   ctx->buses);
             ev->serial = ctx->serial;
         }
         bool done = true;
         long lost_here = 0;
-        for (unsigned ch = 0; ch < ctx->ears->count; ch++) {
+        for (unsigned ch = 0; ch < ears; ch++) {
             long a, b;
             const fg_event_ear *ear = &ev->ear[ch];
             fg_event_ear heard;
@@ -102,7 +124,13 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
                                 ctx->buses, &heard);
                 ear = &heard;
             }
-            if (fg_discharge_add_event(ev, ear, &play, ch, add, &a, &b) != FG_WAVE_DONE)
+            fg_wave_status st = fg_discharge_add_event(ev, ear, &play, ch, add, &a, &b);
+            if (st == FG_WAVE_NON_FINITE) {
+                v->non_finite = true;
+                return false;
+            }
+            fg_discharge_charge(ctx, v->model, st, a, b);
+            if (st != FG_WAVE_DONE)
                 done = false;
             long missed = k >= first_new && a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
             if (missed > lost_here)
@@ -122,18 +150,24 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
     return in->lo == n;
 }
 
-/* fg_source_ops.render of a discharge model whose events add. */
+/* fg_source_ops.render of a discharge model whose events add. A voice
+ * whose wave turned non-finite is retired at once: what it added before
+ * was finite, and it adds nothing more. */
 static inline bool fg_discharge_render_with(void *voice, bool stopping,
                                             const fg_block_context *ctx, fg_discharge_add_fn add)
 {
     fg_discharge_voice *v = voice;
     fg_discharge_block vb;
     fg_discharge_begin_block(v, stopping, ctx, &vb);
-    for (uint32_t i = 0; i < v->inst_count;) {
+    for (uint32_t i = 0; i < v->inst_count && !v->non_finite;) {
         if (fg_discharge_render_instance(v, &v->inst[i], &vb, add))
             v->inst[i] = v->inst[--v->inst_count];
         else
             i++;
+    }
+    if (v->non_finite) {
+        fg_count(&ctx->counters->non_finite_voices, 1);
+        return true;
     }
     return v->inst_count == 0 && v->next_repeat_s < 0;
 }

@@ -85,8 +85,11 @@ fg_result fg_sound_config_check(const fg_sound_config *p)
         !isfinite(p->sigma0) || !isfinite(p->t0_jitter) || !isfinite(p->return_stroke_speed_m_s) ||
         !isfinite(p->ref_half_len_m))
         return FG_ERR_NOT_FINITE;
-    if (p->t0_s <= 0 || p->r0_m <= 0 || p->ps0_pa <= 0 || p->sigma0 < 0 || p->t0_jitter < 0 ||
-        p->t0_jitter >= 1 || p->return_stroke_speed_m_s <= 0 || p->ref_half_len_m < 0)
+    if (p->t0_s < FG_SOUND_MIN_T0_S || p->t0_s > FG_SOUND_MAX_T0_S || p->r0_m <= 0 ||
+        p->r0_m > FG_SOUND_MAX_R0_M || p->ps0_pa <= 0 || p->ps0_pa > FG_SOUND_MAX_PS0_PA ||
+        p->sigma0 < 0 || p->sigma0 > FG_SOUND_MAX_SIGMA0 || p->t0_jitter < 0 ||
+        p->t0_jitter >= 1 || p->return_stroke_speed_m_s < FG_SOUND_MIN_RETURN_STROKE_M_S ||
+        p->return_stroke_speed_m_s > FG_SOUND_MAX_RETURN_STROKE_M_S || p->ref_half_len_m < 0)
         return FG_ERR_ARGUMENT;
     return FG_OK;
 }

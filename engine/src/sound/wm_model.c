@@ -31,6 +31,13 @@ static double wm_start_s(const fg_event *ev, const fg_event_ear *ear, double c_m
     return ear->center_s - half;
 }
 
+static bool wm_finite(const fg_event *ev, const fg_event_ear *ear, double fs_hz, double c_m_s)
+{
+    fg_wm_event we = {.shape = ear->wm, .center = ear->center_s * fs_hz,
+                      .width = fs_hz * ev->half_len_m / c_m_s * ear->rate};
+    return fg_wm_event_in_range(&we);
+}
+
 /* A moving ear hears the wave stretched by its rate: tau advances
  * (c - dr/dt) / l per second, so a unit of tau lasts rate l / c. */
 static fg_wave_status wm_add(const fg_event *ev, const fg_event_ear *ear,
@@ -43,6 +50,8 @@ static fg_wave_status wm_add(const fg_event *ev, const fg_event_ear *ear,
         .center = play->origin_frame + (play->offset_s + ear->center_s) * fs,
         .width = fs * ev->half_len_m / play->c_m_s * ear->rate,
     };
+    if (!fg_wm_event_in_range(&we))
+        return FG_WAVE_NON_FINITE;
     fg_wm_event_span(&we, first, last);
     fg_wave_status status = FG_WAVE_DONE;
     for (int k = 0; k < 2; k++) {
@@ -50,6 +59,8 @@ static fg_wave_status wm_add(const fg_event *ev, const fg_event_ear *ear,
             continue;
         we.shape.b = ear->wm.b * play->share[k];
         status = fg_wm_accum_add(fg_bus_accum(play->buses, play->bus + k * FG_BUS_PLAIN, ch), &we);
+        if (status == FG_WAVE_NON_FINITE)
+            break;
     }
     return status;
 }
@@ -63,6 +74,8 @@ static const fg_discharge_model wm_model = {
     .stride = wm_stride,
     .wave = wm_wave,
     .start_s = wm_start_s,
+    .finite = wm_finite,
+    .samples_per_unit = 0, /* a few closed-form terms, whatever its length */
 };
 
 const fg_source_ops fg_source_wm = {

@@ -12,7 +12,6 @@
  *   x < psi - s (s < psi):    P = (4Bs/3)(3 psi - 2s) + 2B ((psi - s)^2 - x^2)
  *   x < s - psi (s >= psi):   P = 4 B psi^3 / (3s)
  * s -> 0 needs no special case: the cubic shell is then empty. */
-#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -71,6 +70,19 @@ static long sample_at(double x)
     return m - ((double)m > y);
 }
 
+/* Sample positions beyond 2^62 are no block's: their index would not fit. */
+#define SAMPLE_INDEX_LIMIT 4.6e18
+
+bool fg_wm_event_in_range(const fg_wm_event *e)
+{
+    const fg_wm_shape *w = &e->shape;
+    if (!isfinite(w->b) || !(w->s >= 0.0 && w->s <= 1.0) || !(w->psi > 0.0) ||
+        !isfinite(w->psi) || !(e->width > 0.0) || !isfinite(e->width) || !isfinite(e->center))
+        return false;
+    double half = (w->psi + w->s) * e->width;
+    return fabs(e->center) + half < SAMPLE_INDEX_LIMIT;
+}
+
 void fg_wm_event_span(const fg_wm_event *e, long *first, long *last)
 {
     double half = (e->shape.psi + e->shape.s) * e->width;
@@ -108,16 +120,26 @@ static double sample_average(const fg_wm_event *e, long k)
     return fg_wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
 }
 
-/* Samples lo..hi (lo >= -3) evaluated exactly: state for k < 0, third
- * differences for k >= lo + 3 (earlier ones in the range lie on one
- * quadratic piece and have none). */
-static void add_range(fg_accum *b, const fg_wm_event *e, long lo, long hi)
+/* a merged range is at most the state (3) plus 4 breakpoints (7 each) */
+enum { MAX_RANGE = 32, MAX_RANGES = 5 };
+
+/* Samples lo..hi (lo >= -3) evaluated exactly into y[0 .. hi - lo]. */
+static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
 {
-    /* a merged range is at most the state (3) plus 4 breakpoints (7 each) */
-    enum { MAX_RANGE = 32 };
-    double y[MAX_RANGE];
+    bool finite = true;
     for (long k = lo; k <= hi; k++) {
         y[k - lo] = sample_average(e, k);
+        finite = finite && isfinite(y[k - lo]);
+    }
+    return finite;
+}
+
+/* Adds the range eval_range gave: state for k < 0, third differences for
+ * k >= lo + 3 (earlier ones in the range lie on one quadratic piece and
+ * have none). */
+static void add_range(fg_accum *b, long lo, long hi, const double *y)
+{
+    for (long k = lo; k <= hi; k++) {
         if (k < 0)
             b->state[-1 - k] += y[k - lo];
         else if (k >= lo + 3)
@@ -129,21 +151,33 @@ static void add_range(fg_accum *b, const fg_wm_event *e, long lo, long hi)
  * pressure gains a0 + a1 (x' - x) + a2 (x' - x)^2 (per sample units): its
  * running integral G(u) = a0 u + a1 u^2/2 + a2 u^3/3 from x, sampled at
  * sample edges, has a fourth difference that vanishes past four samples. */
-static void add_breakpoint(fg_accum *b, double x, double a0, double a1, double a2)
+typedef struct breakpoint_taps {
+    long m;          /* the sample holding the breakpoint */
+    double taps[4];  /* its third differences at m .. m + 3 */
+} breakpoint_taps;
+
+/* The taps of one breakpoint; false when they are not finite. */
+static bool breakpoint(double x, double a0, double a1, double a2, breakpoint_taps *t)
 {
     long m = sample_at(x);
-    long n = (long)b->n;
-    if (m > n - 1 || m + 3 < 0)
-        return;
     double f = (double)m + 0.5 - x, g[4];
     for (int j = 0; j < 4; j++) {
         double u = j + f;
         g[j] = u * (a0 + u * (0.5 * a1 + u * a2 / 3.0));
     }
-    double taps[4] = {g[0], g[1] - 4.0 * g[0], g[2] - 4.0 * g[1] + 6.0 * g[0],
-                      g[3] - 4.0 * g[2] + 6.0 * g[1] - 4.0 * g[0]};
+    *t = (breakpoint_taps){m, {g[0], g[1] - 4.0 * g[0], g[2] - 4.0 * g[1] + 6.0 * g[0],
+                               g[3] - 4.0 * g[2] + 6.0 * g[1] - 4.0 * g[0]}};
+    return isfinite(t->taps[0]) && isfinite(t->taps[1]) && isfinite(t->taps[2]) &&
+           isfinite(t->taps[3]);
+}
+
+static void add_breakpoint(fg_accum *b, const breakpoint_taps *t)
+{
+    long m = t->m, n = (long)b->n;
+    if (m > n - 1 || m + 3 < 0)
+        return;
     for (long q = m < 0 ? -m : 0; q < 4 && m + q < n; q++)
-        b->d3[m + q] += taps[q];
+        b->d3[m + q] += t->taps[q];
 }
 
 /* The four breakpoints in closed form, when they lie at least a sample
@@ -152,7 +186,7 @@ static void add_breakpoint(fg_accum *b, double x, double a0, double a1, double a
  * terms, so those waves take the exact evaluation around each breakpoint. */
 #define CLOSED_FORM_MIN_SW 2.0
 
-static void add_breakpoints(fg_accum *b, const fg_wm_event *e)
+static bool eval_breakpoints(const fg_wm_event *e, breakpoint_taps t[4])
 {
     const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, k1 = 2.0 * w->b * psi / s, k2 = 2.0 * w->b / s;
@@ -165,13 +199,19 @@ static void add_breakpoints(fg_accum *b, const fg_wm_event *e)
         {outer, -k1, -k2},
     };
     double wd = e->width;
+    bool finite = true;
     for (int i = 0; i < 4; i++)
-        add_breakpoint(b, e->center + jumps[i][0] * wd, 0.0, jumps[i][1] / wd,
-                       0.5 * jumps[i][2] / (wd * wd));
+        finite = breakpoint(e->center + jumps[i][0] * wd, 0.0, jumps[i][1] / wd,
+                            0.5 * jumps[i][2] / (wd * wd), &t[i]) && finite;
+    return finite;
 }
 
+/* Every value is computed before any is added, so that a wave whose
+ * numbers overflow adds nothing (fg_wave_status FG_WAVE_NON_FINITE). */
 fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
 {
+    if (!fg_wm_event_in_range(e))
+        return FG_WAVE_NON_FINITE;
     const fg_wm_shape *w = &e->shape;
     long first, last;
     fg_wm_event_span(e, &first, &last);
@@ -180,22 +220,30 @@ fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
         return FG_WAVE_DONE;
     if (first >= n)
         return FG_WAVE_PENDING;
-    b->touched = true;
 
+    double y[MAX_RANGES][MAX_RANGE];
     if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
-        if (first < 0)
-            add_range(b, e, -3, -1);
-        add_breakpoints(b, e);
+        breakpoint_taps t[4];
+        bool state = first < 0;
+        if ((state && !eval_range(e, -3, -1, y[0])) || !eval_breakpoints(e, t))
+            return FG_WAVE_NON_FINITE;
+        b->touched = true;
+        if (state)
+            add_range(b, -3, -1, y[0]);
+        for (int i = 0; i < 4; i++)
+            add_breakpoint(b, &t[i]);
         return FG_WAVE_SOUNDING;
     }
     /* Breakpoints, ascending; each disturbs the samples m-3..m+3 around the
-     * sample m that holds it. */
+     * sample m that holds it. The overlapping neighbourhoods merge. */
     double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
     double taus[4] = {-outer, -inner, inner, outer};
-    long lo = LONG_MIN, hi = LONG_MIN;
+    long lo[MAX_RANGES], hi[MAX_RANGES];
+    int ranges = 0;
     if (first < 0) {
-        lo = -3;
-        hi = -1;
+        lo[0] = -3;
+        hi[0] = -1;
+        ranges = 1;
     }
     for (int i = 0; i < 4; i++) {
         long m = sample_at(e->center + taus[i] * e->width);
@@ -203,17 +251,20 @@ fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
         long z = m + 3 > n - 1 ? n - 1 : m + 3;
         if (a > z)
             continue;
-        if (hi != LONG_MIN && a <= hi + 1) {
-            if (z > hi)
-                hi = z;
+        if (ranges > 0 && a <= hi[ranges - 1] + 1) {
+            if (z > hi[ranges - 1])
+                hi[ranges - 1] = z;
             continue;
         }
-        if (hi != LONG_MIN)
-            add_range(b, e, lo, hi);
-        lo = a;
-        hi = z;
+        lo[ranges] = a;
+        hi[ranges] = z;
+        ranges++;
     }
-    if (hi != LONG_MIN)
-        add_range(b, e, lo, hi);
+    for (int r = 0; r < ranges; r++)
+        if (!eval_range(e, lo[r], hi[r], y[r]))
+            return FG_WAVE_NON_FINITE;
+    b->touched = true;
+    for (int r = 0; r < ranges; r++)
+        add_range(b, lo[r], hi[r], y[r]);
     return FG_WAVE_SOUNDING;
 }

@@ -38,13 +38,18 @@ double fg_wm_pressure(const fg_wm_shape *w, double tau);
  * P is even in tau and vanishes outside [-(psi+s), psi+s]. */
 double fg_wm_integral(const fg_wm_shape *w, double tau);
 
-/* First and last sample the event touches. */
-void fg_wm_event_span(const fg_wm_event *e, long *first, long *last);
+/* Whether e's numbers are finite and every sample it touches has an index
+ * a long holds: what fg_wm_event_span and fg_wm_accum_add need. */
+bool fg_wm_event_in_range(const fg_wm_event *e);
 
+/* First and last sample the event touches (e in range). */
+void fg_wm_event_span(const fg_wm_event *e, long *first, long *last);
 
 /* Adds event e (positions relative to the block start) to the block's
  * accumulator. The cost is a few closed-form evaluations per breakpoint in
- * the block plus three for the state, whatever the waveform's length. */
+ * the block plus three for the state, whatever the waveform's length.
+ * FG_WAVE_NON_FINITE, adding nothing, when e is out of range or a value
+ * it would add is not finite. */
 fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e);
 
 

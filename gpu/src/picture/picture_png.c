@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "picture_internal.h"
@@ -59,6 +60,13 @@ static int write_rows(FILE *f, const uint8_t *rgba, int w, int h, char *reason)
     return rc;
 }
 
+static mode_t current_umask(void)
+{
+    mode_t mask = umask(0);
+    umask(mask);
+    return mask;
+}
+
 fg_result fgg_picture_write_png(fgg_picture *p, const char *path)
 {
     if (!p || !path)
@@ -85,6 +93,12 @@ fg_result fgg_picture_write_png(fgg_picture *p, const char *path)
     FILE *f = NULL;
     if (fd < 0) {
         snprintf(reason, sizeof reason, "cannot create a file there: %s", strerror(errno));
+    } else if (fchmod(fd, 0666 & ~current_umask()) != 0) {
+        /* mkstemp makes it private: a PNG gets the mode any new file gets */
+        snprintf(reason, sizeof reason, "cannot set its mode: %s", strerror(errno));
+        close(fd);
+        fd = -1;
+        remove(temp);
     } else if (!(f = fdopen(fd, "wb"))) {
         snprintf(reason, sizeof reason, "cannot open it: %s", strerror(errno));
         close(fd);

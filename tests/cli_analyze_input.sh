@@ -1,0 +1,29 @@
+#!/bin/sh
+# usage: cli_analyze_input.sh FULGUR
+# fulgur analyze sizes its spectrogram window from the WAV header's rate: an
+# 844-byte file claiming 2 147 483 647 Hz once took 8.3 GB and 25 s. It is
+# refused (exit 2, the rate named) before anything is allocated; the same
+# file at 48 kHz is analysed.
+set -u
+fulgur=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# header: RIFF, float (3), mono, RATE, byte rate, align 4, 32 bits, 800 data bytes
+wav() {
+    printf 'RIFF\104\003\000\000WAVEfmt \020\000\000\000\003\000\001\000'"$1"'\000\000\000\000\004\000\040\000data\040\003\000\000'
+    head -c 800 /dev/zero
+}
+wav '\377\377\377\177' > "$tmp/fast.wav"
+wav '\200\273\000\000' > "$tmp/ok.wav"
+"$fulgur" analyze "$tmp/fast.wav" --spectrogram "$tmp/s.dat" 2>"$tmp/err" >/dev/null
+rc=$?
+fail=0
+[ "$rc" -eq 2 ] || { echo "2147483647 Hz: exit $rc, expected 2"; fail=1; }
+grep -q "a sample rate of 2147483647 Hz, outside 1..768000" "$tmp/err" ||
+    { echo "2147483647 Hz: stderr lacks the rate: $(cat "$tmp/err")"; fail=1; }
+[ ! -e "$tmp/s.dat" ] || { echo "a refused file left a spectrogram"; fail=1; }
+"$fulgur" analyze "$tmp/ok.wav" --spectrogram "$tmp/s.dat" >/dev/null ||
+    { echo "the 48 kHz file was not analysed"; fail=1; }
+grep -q "window 4096" "$tmp/s.dat" || { echo "48 kHz: not a 4096 window"; fail=1; }
+[ "$fail" -eq 0 ] && echo "analyze: the header's rate is checked"
+exit "$fail"
