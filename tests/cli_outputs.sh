@@ -40,9 +40,17 @@ fi
 mkfifo "$tmp/fifo"
 expect_refused "render -o a FIFO" "$fulgur" render "$tmp/s.json" -o "$tmp/fifo"
 [ -p "$tmp/fifo" ] || { echo "the FIFO was replaced"; fail=1; }
+# -o naming a directory writes SCENE's NAME.wav into it (docs/batch.md);
+# the directory itself is never replaced
 mkdir "$tmp/dir"
-expect_refused "render -o a directory" "$fulgur" render "$tmp/s.json" -o "$tmp/dir"
-[ -d "$tmp/dir" ] || { echo "the directory was replaced"; fail=1; }
+"$fulgur" render "$tmp/s.json" -o "$tmp/dir" >/dev/null 2>&1 ||
+    { echo "render -o a directory failed"; fail=1; }
+[ -d "$tmp/dir" ] && [ -s "$tmp/dir/s.wav" ] ||
+    { echo "render -o a directory: not the directory with s.wav in it"; fail=1; }
+mkdir "$tmp/dir/s.wav.d" && rm -f "$tmp/dir/s.wav" && mv "$tmp/dir/s.wav.d" "$tmp/dir/s.wav"
+expect_refused "render -o a directory whose NAME.wav is a directory" "$fulgur" render \
+    "$tmp/s.json" -o "$tmp/dir"
+[ -d "$tmp/dir/s.wav" ] || { echo "the directory s.wav was replaced"; fail=1; }
 
 expect_refused "render s.json -o s.json" "$fulgur" render "$tmp/s.json" -o "$tmp/s.json"
 ln -s s.json "$tmp/link.json"

@@ -224,7 +224,8 @@ def main():
     commands = []
     for i, (lang, body) in enumerate(blocks(readme)):
         if lang == "sh":
-            lines = [l for l in body.splitlines() if l.strip() and not l.lstrip().startswith("#")]
+            joined = body.replace("\\\n", " ")  # a command continued with a backslash
+            lines = [l for l in joined.splitlines() if l.strip() and not l.lstrip().startswith("#")]
             commands += [(i, l) for l in lines]
         elif lang == "json" and '"discharges"' in body:
             with open(os.path.join(work, "readme_scene.json"), "w") as f:

@@ -183,7 +183,7 @@ static void test_null_feature_uri(void **state)
     LilvWorld *world = lilv_world_new();
     assert_non_null(world);
     lilv_world_load_all(world); /* LV2_PATH */
-    LilvNode *uri = lilv_new_uri(world, "urn:fulgur:lv2:instrument");
+    LilvNode *uri = lilv_new_uri(world, FULGUR_LV2_URI);
     const LilvPlugin *plugin = lilv_plugins_get_by_uri(lilv_world_get_all_plugins(world), uri);
     assert_non_null(plugin);
     static const LV2_Feature broken = {NULL, NULL};

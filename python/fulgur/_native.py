@@ -32,9 +32,12 @@ enum { FG_NODE_MAIN = 1 };
 typedef struct fg_node { double x, y, z; int32_t parent; uint32_t flags; } fg_node;
 typedef enum fg_tree_fault_kind {
     FG_TREE_FAULT_NONE = 0, FG_TREE_FAULT_TOO_FEW_NODES, FG_TREE_FAULT_ROOT,
-    FG_TREE_FAULT_PARENT_ORDER, FG_TREE_FAULT_NOT_FINITE, FG_TREE_FAULT_ZERO_LENGTH
+    FG_TREE_FAULT_PARENT_ORDER, FG_TREE_FAULT_NOT_FINITE, FG_TREE_FAULT_ZERO_LENGTH,
+    FG_TREE_FAULT_TOO_FAR, FG_TREE_FAULT_TOO_SHORT
 } fg_tree_fault_kind;
-typedef struct fg_tree_fault { fg_tree_fault_kind kind; size_t node; int32_t parent; } fg_tree_fault;
+typedef struct fg_tree_fault {
+    fg_tree_fault_kind kind; size_t node; int32_t parent; double value;
+} fg_tree_fault;
 fg_result fg_tree_check(const fg_node *nodes, size_t count, fg_tree_fault *fault);
 void fg_tree_fault_describe(const fg_tree_fault *fault, char *buf, size_t size);
 typedef struct fg_tree fg_tree;
@@ -77,7 +80,7 @@ typedef struct fg_engine_config {
     double sample_rate_hz; uint32_t max_block_frames; uint32_t channels; uint32_t max_voices;
     uint32_t segment_capacity; double speed_of_sound_m_s; double ear_spacing_m;
     double max_lookahead_s; uint32_t max_adopt_per_block; double air_temperature_k;
-    double air_humidity_pct; double air_pressure_kpa;
+    double air_humidity_pct; double air_pressure_kpa; uint32_t work_per_frame;
 } fg_engine_config;
 typedef enum fg_voice_model { FG_MODEL_WM = 0, FG_MODEL_ABE = 1 } fg_voice_model;
 #define FG_MAX_STROKES 32
@@ -93,6 +96,7 @@ typedef struct fg_listener {
 typedef struct fg_engine_report {
     uint64_t posted; uint64_t dropped_posts; uint64_t adopted; uint64_t finished;
     uint64_t collected; uint64_t late_events; uint64_t late_samples; uint64_t skipped_repeats;
+    uint64_t skipped_work; uint64_t non_finite_voices; uint64_t non_finite_blocks;
     uint64_t blocks; uint64_t blocks_over_budget;
 } fg_engine_report;
 uint32_t fg_discharge_stroke_offsets(const fg_discharge *discharge, double *offsets_s,
