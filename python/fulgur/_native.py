@@ -233,8 +233,8 @@ fg_result fgs_wav_write(const char *path, const float *samples, uint64_t frames,
 ENGINE_HEADERS = ("fulgur/fulgur.h",)
 SCENE_HEADERS = ("fulgur/scene_api.h",)
 
-ENGINE_SONAME = "libfulgur.so.0"
-SCENE_SONAME = "libfulgur-scene.so.0"
+ENGINE_SONAME = "libfulgur.so.0.1"
+SCENE_SONAME = "libfulgur-scene.so.0.1"
 
 
 def library_dirs():
@@ -267,12 +267,12 @@ def _open(soname):
     except OSError as e:
         raise ImportError(
             f"fulgur: cannot load {soname} ({e}); build fulgur (cmake --build BUILD) and set "
-            f"FULGUR_LIBRARY_PATH to the folders holding libfulgur.so.0 and "
-            f"libfulgur-scene.so.0 (BUILD/engine:BUILD/host), or install them "
+            f"FULGUR_LIBRARY_PATH to the folders holding libfulgur.so.0.1 and "
+            f"libfulgur-scene.so.0.1 (BUILD/engine:BUILD/host), or install them "
             f"(cmake --install BUILD; ldconfig)") from e
 
 
-# The engine first: libfulgur-scene's need of libfulgur.so.0 is then met by it.
+# The engine first: libfulgur-scene's need of libfulgur.so.0.1 is then met by it.
 lib, ENGINE_PATH = _open(ENGINE_SONAME)
 scene_lib, SCENE_PATH = _open(SCENE_SONAME)
 

@@ -41,4 +41,4 @@ def test_pip_install_into_a_venv(tmp_path):
     lost = subprocess.run([str(venv / "bin" / "python"), "-c", "import fulgur"],
                           capture_output=True, text=True, env=env, cwd=tmp_path)
     if lost.returncode != 0:  # (unless they are installed system-wide here)
-        assert "FULGUR_LIBRARY_PATH" in lost.stderr and "libfulgur.so.0" in lost.stderr
+        assert "FULGUR_LIBRARY_PATH" in lost.stderr and "libfulgur.so.0.1" in lost.stderr
