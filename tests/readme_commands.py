@@ -212,7 +212,11 @@ def main():
     for entry in os.listdir(repo):
         if entry.startswith(("build", ".")) or entry == "out":
             continue
-        os.symlink(os.path.join(repo, entry), os.path.join(work, entry))
+        if entry == "python":  # pip install ./python writes build/ and egg-info beside it
+            shutil.copytree(os.path.join(repo, entry), os.path.join(work, entry),
+                            ignore=shutil.ignore_patterns("build", "*.egg-info", "__pycache__"))
+        else:
+            os.symlink(os.path.join(repo, entry), os.path.join(work, entry))
     os.symlink(build, os.path.join(work, "build-demo"))
     os.mkdir(os.path.join(work, "out"))
     os.mkdir(os.path.join(work, "home"))
