@@ -61,6 +61,8 @@ awk -F'[:,]' '{
 
 # many machines: --sshlogin over two "nodes" through a stand-in for ssh
 # that runs each command here, in the node's own home ($tmp/nodes/NODE),
+# with the login environment sshd gives (HOME, SHELL: GNU parallel's
+# remote worker runs each job with $SHELL, unset where CI runs),
 # with the options docs/batch.md gives: the row script, the scene sent, the
 # files and manifest lines returned (rsync), the nodes' copies removed
 mkdir -p "$tmp/work/examples/sweep" "$tmp/bin"
@@ -80,7 +82,7 @@ node=$1
 shift
 [ "${1:-}" = "--" ] && shift
 echo "$node" >> "$NODES/calls"
-mkdir -p "$NODES/$node" && cd "$NODES/$node" && HOME=$NODES/$node exec sh -c "$*"
+mkdir -p "$NODES/$node" && cd "$NODES/$node" && HOME=$NODES/$node SHELL=/bin/sh exec sh -c "$*"
 SSH
 mkdir "$tmp/nodes"
 (cd "$tmp/work" && env -u FULGUR NODES="$tmp/nodes" PATH="$tmp/bin:$PATH" \
