@@ -21,7 +21,7 @@
 #include "scene/scene.h"
 #include "scene/scene_render.h"
 #ifdef FULGUR_HAVE_GPU
-#include "render_picture.h"
+#include "gl_module.h"
 #endif
 
 /* --set at most, per call. */
@@ -200,8 +200,10 @@ static int draw(const scene *s, const picture_job *pic, char *err, size_t err_si
     if (!pic->file.path)
         return 0;
 #ifdef FULGUR_HAVE_GPU
-    return render_picture(s, pic->file.temp_path, pic->file.path, pic->time_s, pic->width,
-                          pic->height, err, err_size);
+    const gl_module *gl = gl_module_get(err, err_size);
+    return gl ? gl->render_picture(s, pic->file.temp_path, pic->file.path, pic->time_s,
+                                   pic->width, pic->height, err, err_size)
+              : -1;
 #else
     (void)s;
     snprintf(err, err_size, "--png needs gpu/");
