@@ -6,7 +6,8 @@
 # libepoxy, libOSMesa, libLLVM, libgbm, libdrm, FreeType or fontconfig, nor
 # fulgur's GL module; the list is every object the dynamic loader maps,
 # dlopen included (glibc's LD_DEBUG=files). The control: --png of
-# GPU_SCENE does load the module and epoxy, so the check can see them.
+# GPU_SCENE does load the module and epoxy, so the check can see them; a
+# copy of the program without its module says so and writes nothing.
 set -u
 fulgur=$1
 scene=$2
@@ -43,4 +44,16 @@ if [ -n "$gpu_scene" ]; then
             { echo "the control failed: --png did not load $lib"; exit 1; }
     done
     echo "--png loads the GL module and epoxy (the control)"
+fi
+if [ -n "$gpu_scene" ]; then
+    mkdir "$tmp/alone"
+    cp "$fulgur" "$tmp/alone/fulgur"
+    if "$tmp/alone/fulgur" render "$gpu_scene" -o "$tmp/alone/c.wav" --png "$tmp/alone/c.png" \
+        2>"$tmp/err"; then
+        echo "--png without the GL module succeeded"; exit 1
+    fi
+    grep -q "cannot open fulgur's GL module.*fulgur-gl.so: absent" "$tmp/err" ||
+        { cat "$tmp/err"; echo "no message naming the missing module"; exit 1; }
+    [ "$(ls "$tmp/alone")" = fulgur ] || { ls "$tmp/alone"; echo "files left behind"; exit 1; }
+    echo "without its module: $(cat "$tmp/err")"
 fi
