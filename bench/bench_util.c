@@ -1,8 +1,13 @@
-#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE /* wait4 */
+#include <fcntl.h>
 #include <math.h>
+#include <spawn.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "bench_util.h"
 
@@ -96,4 +101,34 @@ void bench_machine(char *buf, size_t size)
         }
     }
     fclose(f);
+}
+
+extern char **environ;
+
+bench_child bench_run_child(char *const argv[], const char *stdout_path)
+{
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, stdout_path ? stdout_path : "/dev/null",
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    double t0 = bench_now_s();
+    pid_t pid;
+    if (posix_spawn(&pid, argv[0], &fa, NULL, argv, environ) != 0) {
+        fprintf(stderr, "bench: cannot start %s\n", argv[0]);
+        exit(1);
+    }
+    int status;
+    struct rusage ru;
+    if (wait4(pid, &status, 0, &ru) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        fprintf(stderr, "bench: %s %s failed\n", argv[0], argv[1] ? argv[1] : "");
+        exit(1);
+    }
+    posix_spawn_file_actions_destroy(&fa);
+    bench_child r = {.wall_s = bench_now_s() - t0};
+    r.cpu_s = (double)ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6 + (double)ru.ru_stime.tv_sec +
+              ru.ru_stime.tv_usec * 1e-6;
+    r.peak_mib = ru.ru_maxrss / 1024.0; /* Linux: KiB */
+    return r;
 }

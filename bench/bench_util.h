@@ -28,6 +28,17 @@ bench_fit bench_fit_line(const double *x, const double *y, size_t n);
  * FULGUR_RESULTS environment variable, default bench/results), or exits. */
 FILE *bench_open_result(const char *name);
 
+/* One child process's cost, start to exit: CPU time (user + system, from
+ * wait4's rusage), wall time, and peak resident memory. */
+typedef struct bench_child {
+    double cpu_s, wall_s, peak_mib;
+} bench_child;
+
+/* Runs argv (argv[0] a path) once, stdin from /dev/null, stdout to
+ * stdout_path (NULL: /dev/null), stderr to /dev/null; exits when it cannot
+ * start or does not exit 0. */
+bench_child bench_run_child(char *const argv[], const char *stdout_path);
+
 /* A one-line description of this machine's processor, for the results. */
 void bench_machine(char *buf, size_t size);
 

@@ -6,49 +6,12 @@
  * timed the same way, as the machine's floor (a loaded machine inflates
  * every process's CPU time alike). stdout and stderr go to /dev/null.
  * usage: bench_startup FULGUR SCENE.json [RUNS]; writes startup.csv. */
-#define _DEFAULT_SOURCE /* wait4, mkstemps */
-#include <fcntl.h>
-#include <spawn.h>
+#define _DEFAULT_SOURCE /* mkstemps */
 #include <stdio.h>
 #include <stdlib.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "bench_util.h"
-
-extern char **environ;
-
-typedef struct one_run {
-    double cpu_s, wall_s, peak_mib;
-} one_run;
-
-/* Runs argv once with stdout and stderr to /dev/null; exits on failure. */
-static one_run run_once(char *const argv[])
-{
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-    double t0 = bench_now_s();
-    pid_t pid;
-    if (posix_spawn(&pid, argv[0], &fa, NULL, argv, environ) != 0) {
-        fprintf(stderr, "bench_startup: cannot start %s\n", argv[0]);
-        exit(1);
-    }
-    int status;
-    struct rusage ru;
-    if (wait4(pid, &status, 0, &ru) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        fprintf(stderr, "bench_startup: %s %s failed\n", argv[0], argv[1]);
-        exit(1);
-    }
-    posix_spawn_file_actions_destroy(&fa);
-    one_run r = {.wall_s = bench_now_s() - t0};
-    r.cpu_s = (double)ru.ru_utime.tv_sec + ru.ru_utime.tv_usec * 1e-6 + (double)ru.ru_stime.tv_sec +
-              ru.ru_stime.tv_usec * 1e-6;
-    r.peak_mib = ru.ru_maxrss / 1024.0; /* Linux: KiB */
-    return r;
-}
 
 int main(int argc, char **argv)
 {
@@ -88,7 +51,7 @@ int main(int argc, char **argv)
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         double peak = 0;
         for (int i = 0; i < runs; i++) {
-            one_run r = run_once(cases[c].argv);
+            bench_child r = bench_run_child(cases[c].argv, NULL);
             cpu[i] = r.cpu_s, wall[i] = r.wall_s;
             peak = r.peak_mib > peak ? r.peak_mib : peak;
         }

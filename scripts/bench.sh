@@ -3,8 +3,19 @@
 # to bench/results/. Takes a few minutes on 2 cores, and bench_aero (the
 # sound-texture precompute times) about an hour more; FULGUR_BENCH_SKIP=aero
 # leaves it out.
+#
+# usage: scripts/bench.sh [PEER]
+# PEER: a peer's program for bench_whole's comparison (bench/whole_process.c
+# says what it must do; bench/peer/build_cosinekitty.sh builds the driver
+# of cosinekitty/thunder outside this tree and prints its path). Without
+# it whole_process.csv has fulgur's figures only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+peer=${1:-}
+if [ -n "$peer" ]; then
+  peer=$(cd "$(dirname "$peer")" && pwd)/$(basename "$peer")
+  [ -x "$peer" ] || { echo "bench.sh: $peer is not an executable"; exit 2; }
+fi
 source scripts/deps.sh
 fulgur_install_deps
 cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DFULGUR_TESTS=OFF >/dev/null
@@ -15,6 +26,10 @@ for b in build-bench/bench/bench_*; do
   echo "== ${b##*/}"
   case ${b##*/} in
     bench_startup) "$b" build-bench/host/fulgur bench/scenes/one_segment.json ;;
+    bench_whole)
+      "$b" build-bench/host/fulgur "$peer"
+      sh bench/whole_breakdown.sh build-bench/host/fulgur "$b"
+      ;;
     *) "$b" ;;
   esac
 done
@@ -23,5 +38,6 @@ PYTHONPATH=build-bench/python python3 bench/python_render.py build-bench/host/fu
 for p in bench/plots/*.gp; do
   gnuplot "$p"
 done
+sh bench/readme_table.sh README.md bench/results
 echo "results in bench/results/:"
 ls bench/results/

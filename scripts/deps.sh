@@ -10,6 +10,7 @@ fulgur_install_deps() {
               python3-cffi python3-numpy python3-pytest python3-venv python3-pip
               python3-setuptools python3-wheel parallel rsync
               jackd2 libjack-jackd2-dev portaudio19-dev alsa-utils
+              valgrind git
               ${FULGUR_DEPS_EXTRA:-})
   local missing=()
   for p in "${pkgs[@]}"; do

@@ -5,7 +5,7 @@
 # through pkg-config (fulgur, fulgur-gpu), and C and C++ through the CMake
 # package (find_package(fulgur) -> fulgur::fulgur, fulgur::gpu); each runs.
 # Also checks the installed layout: headers, the SONAMEs, the pc files, the
-# LV2 bundle.
+# LV2 bundle, the program's GL module.
 set -eu
 build=$1
 src=$2
@@ -24,6 +24,13 @@ for f in libfulgur.so libfulgur.a libfulgur_gpu.so pkgconfig/fulgur.pc pkgconfig
 done
 grep -q "^prefix=$prefix\$" "$libdir/pkgconfig/fulgur.pc" ||
     { echo "fulgur.pc does not name the prefix installed to:"; cat "$libdir/pkgconfig/fulgur.pc"; exit 1; }
+# the installed program finds its GL module (host/cli/gl_module.h), when built
+if [ -e "$libdir/fulgur/fulgur-gl.so" ]; then
+    "$prefix/bin/fulgur" view --help > "$tmp/view.txt" ||
+        { echo "the installed fulgur cannot open its GL module"; exit 1; }
+    grep -q "^usage: fulgur view" "$tmp/view.txt" || { cat "$tmp/view.txt"; exit 1; }
+    echo "the installed fulgur opens ${libdir#$prefix/}/fulgur/fulgur-gl.so"
+fi
 export PKG_CONFIG_PATH=$libdir/pkgconfig
 version=$(pkg-config --modversion fulgur)
 echo "installed fulgur $version to $prefix"

@@ -4,6 +4,10 @@
 
 #include "common/commands.h"
 #include "fulgur/version.h"
+#ifdef FULGUR_HAVE_GPU
+#include "gl_module.h"
+#include "scene/generator_field_gpu.h"
+#endif
 
 static const struct {
     const char *name;
@@ -13,7 +17,7 @@ static const struct {
     {"render", render_main, "render a scene to a 32-bit float WAV through the real-time engine"},
     {"run", run_main, "run a scene in real time, as a VR application would, and report timing as JSON"},
 #ifdef FULGUR_HAVE_GPU
-    {"view", view_main, "show and sound discharges in a window (or headless): place charges, trigger"},
+    {"view", gl_view_main, "show and sound discharges in a window (or headless): place charges, trigger"},
 #endif
     {"analyze", analyze_main, "write a WAV's waveform envelope and spectrogram for gnuplot"},
     {"aerotex", aerotex_main, "compute an aerodynamic sound texture of a shape by CFD (or show one)"},
@@ -31,6 +35,9 @@ static void usage(FILE *to)
 
 int main(int argc, char **argv)
 {
+#ifdef FULGUR_HAVE_GPU
+    gen_field_set_gpu_grower(gl_field_gpu_grow); /* opens the GL module when a scene asks */
+#endif
     if (argc < 2) {
         usage(stderr);
         return CLI_USAGE;

@@ -9,10 +9,16 @@
 #include "fg_math.h"
 #include "fulgur/fulgur.h"
 #include "generator.h"
-#include "json_read.h"
-#ifdef FULGUR_HOST_GPU
 #include "generator_field_gpu.h"
-#endif
+#include "json_read.h"
+
+/* "solver": "gpu": set by the program that has one (generator_field_gpu.h). */
+static gen_field_gpu_grower gpu_grower;
+
+void gen_field_set_gpu_grower(gen_field_gpu_grower grow)
+{
+    gpu_grower = grow;
+}
 
 /* Where messages point: the generator's JSON path and the caller's buffer. */
 typedef struct ctx {
@@ -184,11 +190,9 @@ static int parse_solver(const ctx *c, const cJSON *spec, int dbm, int *solver)
     char p[JSON_PATH_MAX];
     if (json_name(spec, c->path, "solver", names, 2, solver, c->err, c->err_size))
         return -1;
-#ifndef FULGUR_HOST_GPU
-    if (*solver == SOLVER_GPU)
+    if (*solver == SOLVER_GPU && !gpu_grower)
         return json_fail(c->err, c->err_size, at(c, p, "solver"),
                          "\"gpu\" needs a fulgur built with gpu/ (FULGUR_GPU=ON)");
-#endif
     if (*solver == SOLVER_GPU && dbm)
         return json_fail(c->err, c->err_size, at(c, p, "solver"),
                          "\"gpu\" grows Matsuyama leaders only: DBM changes the field at "
@@ -225,10 +229,9 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
             "potential and all targets at another");
     }
     fg_solve_report rep = {0};
-#ifdef FULGUR_HOST_GPU
-    if (solver == SOLVER_GPU) {
+    if (solver == SOLVER_GPU && gpu_grower) {
         char msg[256] = "";
-        r = gen_field_gpu_grow(f, growth, out, &rep.residual, msg, sizeof msg);
+        r = gpu_grower(f, growth, out, &rep.residual, msg, sizeof msg);
         fg_field_destroy(f);
         if (r == FG_ERR_UNREACHABLE)
             return json_fail(c->err, c->err_size, at(c, p, "shapes"),
@@ -238,9 +241,6 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
                              "the GPU solve or growth failed: %s (%s)", fg_result_str(r), msg);
         return 0;
     }
-#else
-    (void)solver;
-#endif
     r = fg_field_solve(f, NULL, &rep);
     if (r == FG_OK) {
         if (dbm) {

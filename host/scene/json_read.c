@@ -61,6 +61,11 @@ int json_check_keys(const cJSON *obj, const char *path, const char *const *allow
 int json_number_value(const cJSON *item, const char *path, number_range r, double *out, char *err,
                       size_t err_size)
 {
+    /* the common case first: the message is formatted only on failure */
+    if (cJSON_IsNumber(item) && number_range_holds(r, item->valuedouble)) {
+        *out = item->valuedouble;
+        return 0;
+    }
     char range[96];
     number_range_format(r, range, sizeof range);
     const char *what = r.integer ? "an integer" : "a number";

@@ -124,6 +124,21 @@ static int check_duration(const scene *s, char *err, size_t err_size)
     return 0;
 }
 
+/* The explicit trees' "nodes" are copied into the discharges once parsed:
+ * their part of the document (most of it in a big scene, ~400 bytes of
+ * cJSON per node) is freed before anything is built or rendered. What
+ * stays is what the generators read again (a run or view regrows them). */
+static void drop_parsed_trees(cJSON *json)
+{
+    cJSON *list = cJSON_GetObjectItemCaseSensitive(json, "discharges");
+    for (cJSON *item = list ? list->child : NULL; item; item = item->next)
+        cJSON_DeleteItemFromObjectCaseSensitive(item, "tree");
+    cJSON_DeleteItemFromObjectCaseSensitive(cJSON_GetObjectItemCaseSensitive(json, "random"),
+                                            "tree");
+    cJSON_DeleteItemFromObjectCaseSensitive(
+        cJSON_GetObjectItemCaseSensitive(json, "random (template)"), "tree");
+}
+
 int scene_parse_with(const char *text, size_t size, const char *const *sets, size_t set_count,
                      scene *out, char *err, size_t err_size)
 {
@@ -153,8 +168,10 @@ int scene_parse_with(const char *text, size_t size, const char *const *sets, siz
         scene_parse_random(json, out, err, err_size) == 0 &&
         scene_parse_camera(cJSON_GetObjectItemCaseSensitive(json, "camera"), out, err,
                            err_size) == 0 &&
-        check_duration(out, err, err_size) == 0)
+        check_duration(out, err, err_size) == 0) {
+        drop_parsed_trees(json);
         rc = 0;
+    }
     out->json = json;
     if (rc != 0)
         scene_deinit(out);

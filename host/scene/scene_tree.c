@@ -12,21 +12,30 @@ static const number_range coordinate = {.lo = -FG_TREE_MAX_COORDINATE_M,
 static const number_range parent_index = {-1, INT32_MAX, .integer = true};
 static const number_range main_flag = {0, 1, .integer = true};
 
-static int parse_node(const cJSON *item, const char *path, fg_node *node, char *err,
-                      size_t err_size)
+/* Node `index` of the list at list_path; the paths of the node and its
+ * elements are made only for a message (a big tree has millions of
+ * numbers). */
+static int parse_node(const cJSON *item, const char *list_path, size_t index, fg_node *node,
+                      char *err, size_t err_size)
 {
+    char path[JSON_PATH_MAX], elem[JSON_PATH_MAX];
     int n = cJSON_GetArraySize(item);
-    if (!cJSON_IsArray(item) || n < 4 || n > 5)
+    if (!cJSON_IsArray(item) || n < 4 || n > 5) {
+        json_path_index(path, sizeof path, list_path, index);
         return json_fail(err, err_size, path,
                          "expected [x, y, z, parent] or [x, y, z, parent, main]");
+    }
     double v[5] = {0};
-    char elem[JSON_PATH_MAX];
     int k = 0;
     for (const cJSON *c = item->child; c; c = c->next, k++) {
-        json_path_index(elem, sizeof elem, path, (size_t)k);
         number_range r = k < 3 ? coordinate : k == 3 ? parent_index : main_flag;
-        if (json_number_value(c, elem, r, &v[k], err, err_size))
-            return -1;
+        if (cJSON_IsNumber(c) && number_range_holds(r, c->valuedouble)) {
+            v[k] = c->valuedouble;
+            continue;
+        }
+        json_path_index(path, sizeof path, list_path, index);
+        json_path_index(elem, sizeof elem, path, (size_t)k);
+        return json_number_value(c, elem, r, &v[k], err, err_size);
     }
     *node = (fg_node){v[0], v[1], v[2], (int32_t)v[3], v[4] != 0 ? FG_NODE_MAIN : 0u};
     return 0;
@@ -49,7 +58,7 @@ int scene_check_tree(const fg_node *nodes, size_t count, const char *nodes_path,
 int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[3],
                      const fg_node **nodes, size_t *count, char *err, size_t err_size)
 {
-    char list_path[JSON_PATH_MAX], node_path[JSON_PATH_MAX];
+    char list_path[JSON_PATH_MAX];
     json_path_key(list_path, sizeof list_path, path, "nodes");
     if (json_check_keys(item, path, tree_keys, err, err_size))
         return -1;
@@ -61,11 +70,9 @@ int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[
     if (!out)
         return json_fail(err, err_size, list_path, "out of memory");
     size_t i = 0;
-    for (const cJSON *c = list->child; c; c = c->next, i++) {
-        json_path_index(node_path, sizeof node_path, list_path, i);
-        if (parse_node(c, node_path, &out[i], err, err_size))
+    for (const cJSON *c = list->child; c; c = c->next, i++)
+        if (parse_node(c, list_path, i, &out[i], err, err_size))
             goto fail;
-    }
     fg_tree_translate(out, n, offset_m);
     if (scene_check_tree(out, n, list_path, err, err_size))
         goto fail;
