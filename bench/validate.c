@@ -6,7 +6,8 @@
  *   3. the shadow zone at D = 3 km, R = 55 km, measured segment by segment
  *      against the tangent ray and the creeping wave's decay;
  *   4. the lightning preset's mean segments and sound against table 2;
- *   5. spark-scale peak pressures and spectra at 1 m.
+ *   5. spark-scale peak pressures and spectra at 1 m;
+ *   6. peak pressure and A-weighted level of the bolt at 3, 15 and 25 km.
  * With --check it exits non-zero when a deterministic figure leaves its
  * tolerance (the CTest "validation"); the judgements stay in the report. */
 #include <complex.h>
@@ -160,6 +161,42 @@ static double duration_90(const signal *s)
             b = k;
     }
     return (double)(b - a) / FS;
+}
+
+/* IEC 61672-1 A-weighting, as a power ratio, at f_hz (0 dB at 1 kHz). */
+static double a_weight_power(double f_hz)
+{
+    double f2 = f_hz * f_hz;
+    double ra = 12194.0 * 12194.0 * f2 * f2 /
+                ((f2 + 20.6 * 20.6) * sqrt((f2 + 107.7 * 107.7) * (f2 + 737.9 * 737.9)) *
+                 (f2 + 12194.0 * 12194.0));
+    return ra * ra * pow(10.0, 2.0 / 10.0);
+}
+
+/* The A-weighted equivalent level over the span holding the middle 90 % of
+ * the energy, dB re 20 uPa: 90 % of the A-weighted energy (one FFT of the
+ * whole render, Parseval) over that span. -inf for silence. */
+static double laeq_90(const signal *s)
+{
+    size_t n = 1;
+    while (n < s->n)
+        n *= 2;
+    double *in = fftw_malloc(n * sizeof *in);
+    fftw_complex *out = fftw_malloc((n / 2 + 1) * sizeof *out);
+    fftw_plan plan = fftw_plan_dft_r2c_1d((int)n, in, out, FFTW_ESTIMATE);
+    for (size_t k = 0; k < n; k++)
+        in[k] = k < s->n ? s->x[k] : 0.0;
+    fftw_execute(plan);
+    double energy = 0.0; /* sum of x_A^2 */
+    for (size_t k = 1; k <= n / 2; k++) {
+        double p = creal(out[k]) * creal(out[k]) + cimag(out[k]) * cimag(out[k]);
+        energy += (k == n / 2 ? 1.0 : 2.0) * p * a_weight_power(k * FS / n) / n;
+    }
+    fftw_destroy_plan(plan);
+    fftw_free(in);
+    fftw_free(out);
+    double span = duration_90(s);
+    return 10.0 * log10(0.9 * energy / (FS * fmax(span, 1.0 / FS)) / (20e-6 * 20e-6));
 }
 
 static double peak_pa(const signal *s)
@@ -363,6 +400,41 @@ int main(int argc, char **argv)
     }
     write_spectrum("validation_sparks.csv", spark_psd[0], spark_psd[1]);
     fprintf(c.md, "\n![sparks](validation_sparks.png)\n\n");
+
+    /* 6. level and audibility against distance, both T0s */
+    fprintf(c.md, "## 6. Level against distance\n\nThe 5 km bolt (seed 7) heard at 3, 15 and "
+                  "25 km. LAeq: the A-weighted (IEC 61672-1) equivalent level over the span "
+                  "holding 90 %% of the energy. Published: \"a few tens of Pa\" a few km away; "
+                  "thunder is rarely heard beyond 20-25 km.\n\n"
+                  "| T0 | listener | peak band | peak pressure | LAeq |\n|---|---|---|---|---|\n");
+    static const double ranges_km[] = {3.0, 15.0, 25.0};
+    double band_hz[3], peak[3], laeq[3];
+    for (int i = 0; i < 2; i++) {
+        fg_sound_config p = lightning;
+        p.t0_s = t0s[i];
+        for (int j = 0; j < 3; j++) {
+            fg_tree *t = bolt(0, 1000.0 * ranges_km[j], 7);
+            signal s = render(fg_tree_nodes(t), fg_tree_count(t), &p, &air, 1);
+            fg_tree_destroy(t);
+            static double psd[WINDOW / 2 + 1];
+            spectrum(&s, psd);
+            band_hz[j] = peak_band_hz(psd);
+            peak[j] = peak_pa(&s);
+            laeq[j] = laeq_90(&s);
+            fprintf(c.md, "| %.1f ms%s | %.0f km | %.0f Hz | %.2f Pa | %.1f dBA |\n",
+                    1e3 * p.t0_s, i == 0 ? " (table 1)" : "", ranges_km[j], band_hz[j], peak[j],
+                    laeq[j]);
+            free(s.x);
+        }
+    }
+    /* the figures of the last (2.5 ms) rows against the published ones */
+    fputc('\n', c.md);
+    check(&c, band_hz[0] >= 20.0 && band_hz[0] <= 125.0,
+          "T0 = 2.5 ms, 3 km: the loudest third-octave band within 20-125 Hz");
+    check(&c, peak[0] >= 5.0 && peak[0] <= 100.0, "T0 = 2.5 ms, 3 km: peak within 5-100 Pa");
+    check(&c, laeq[1] <= laeq[0] - 10.0, "T0 = 2.5 ms: 15 km at least 10 dB below 3 km");
+    check(&c, laeq[2] < 40.0, "T0 = 2.5 ms: 25 km below 40 dBA");
+    fputc('\n', c.md);
 
     fprintf(c.md, "## Reading the figures\n\n"
                   "The single N-wave sets the spectral peak: an N-wave of half-duration T has "
