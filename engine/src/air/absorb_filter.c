@@ -5,7 +5,7 @@
 #include "absorb_filter_internal.h"
 #include "fg_math.h"
 
-#define NP (4 * FG_IIR_MAX_SECTIONS) /* u1, u2 for numerator and denominator */
+#define NP FG_ABSORB_PARAMS
 #define U_MAX 12.0 /* parameters stay where tanh still has a slope */
 #define ITERATIONS 600
 
@@ -205,7 +205,8 @@ static void initial_guess(const problem *pb, double spread, double *u)
     }
 }
 
-double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double fs_hz)
+double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double fs_hz,
+                        fg_absorb_fit *fit)
 {
     problem pb;
     double lo = log(FG_ABSORB_LO_HZ), hi = log(fg_absorb_hi_hz(fs_hz));
@@ -215,10 +216,20 @@ double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double 
         pb.e[i] = fg_phasor_at(pb.w[i]);
         pb.target[i] = fg_absorb_target_db(air, distance_m, hz);
     }
+    double u[NP], best = INFINITY, r[FG_ABSORB_GRID];
+    bool accepted = false;
+    if (fit && fit->valid) {
+        /* a neighbouring distance's solution is nearly this one's */
+        memcpy(u, fit->u, sizeof u);
+        best = levenberg_marquardt(&pb, u);
+        evaluate(&pb, u, r, NULL);
+        accepted = true;
+        for (int i = 0; i < FG_ABSORB_GRID; i++)
+            accepted = accepted && fabs(r[i]) <= FG_ABSORB_WARM_ACCEPT_DB;
+    }
     /* Local minima are common: keep the best of a few starts. */
     static const double spreads[] = {1.5, 2.0, 3.0};
-    double u[NP], best = INFINITY;
-    for (size_t s = 0; s < sizeof spreads / sizeof spreads[0]; s++) {
+    for (size_t s = 0; !accepted && s < sizeof spreads / sizeof spreads[0]; s++) {
         double v[NP];
         initial_guess(&pb, spreads[s], v);
         double cost = levenberg_marquardt(&pb, v);
@@ -229,7 +240,11 @@ double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double 
     }
     to_filter(u, f);
     fg_iir_reset(f);
-    double r[FG_ABSORB_GRID], worst = 0.0;
+    if (fit) {
+        memcpy(fit->u, u, sizeof u);
+        fit->valid = true;
+    }
+    double worst = 0.0;
     evaluate(&pb, u, r, NULL);
     for (int i = 0; i < FG_ABSORB_GRID; i++)
         worst = fmax(worst, fabs(r[i]));

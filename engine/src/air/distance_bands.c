@@ -11,6 +11,7 @@ fg_result fg_band_plan_init(fg_band_plan *plan, double near_m, double far_m, uns
     plan->count = count;
     plan->log_near = log(near_m);
     plan->log_step = count > 1 ? (log(far_m) - plan->log_near) / (count - 1) : 0.0;
+    plan->q = exp(plan->log_step);
     for (unsigned k = 0; k < count; k++)
         plan->centre_m[k] = near_m * exp(plan->log_step * k);
     return FG_OK;
@@ -30,15 +31,11 @@ void fg_band_locate(const fg_band_plan *plan, double r_m, unsigned *lo, double *
     double x = band_coordinate(plan, r_m);
     double k = floor(x);
     *lo = (unsigned)k;
-    *w_hi = x - k;
-    if (*lo == plan->count - 1)
-        *w_hi = 0.0;
-}
-
-unsigned fg_band_nearest(const fg_band_plan *plan, double r_m)
-{
-    unsigned lo;
-    double w;
-    fg_band_locate(plan, r_m, &lo, &w);
-    return w > 0.5 ? lo + 1 : lo;
+    *w_hi = 0.0;
+    if (*lo == plan->count - 1 || x == k)
+        return;
+    /* a^(q^u) = 10^(-MATCH q^u / 20) */
+    const double ln_a = -FG_BAND_MATCH_DB / 20.0 * log(10.0);
+    double a = exp(ln_a), a_u = exp(ln_a * pow(plan->q, x - k)), a_q = exp(ln_a * plan->q);
+    *w_hi = (a - a_u) / (a - a_q);
 }

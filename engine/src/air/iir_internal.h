@@ -1,4 +1,4 @@
-/* A cascade of up to three biquads, run in transposed direct form II with
+/* A cascade of up to four biquads, run in transposed direct form II with
  * double state. Coefficients and state live in one fixed-size struct;
  * processing never allocates and keeps its state across blocks, so a
  * signal split into blocks anywhere gives exactly the one-shot output. */
@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-#define FG_IIR_MAX_SECTIONS 3
+#define FG_IIR_MAX_SECTIONS 4
 
 /* H(z) = (b0 + b1 z^-1 + b2 z^-2) / (1 + a1 z^-1 + a2 z^-2). A first-order
  * section has b2 = a2 = 0. */

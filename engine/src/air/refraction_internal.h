@@ -8,13 +8,34 @@
  * grows; excess ~ L^3 / 24 R^2). Chords longer than 2R, beyond 40 km even
  * for R = 20 km, take the half circle pi R.
  *
- * Shadow zone: the arc that grazes the ground at a ground listener rises
- * to h = D^2 / 2R at horizontal distance D (parabolic approximation; the
- * ear's own height is neglected). Sources below it are in the shadow: D =
- * 3 km, R = 55 km gives 81.8 m. Following Glassner, they are faded in over
- * the height of the zone rather than cut: gain = smoothstep(h / h_shadow)
- * = 3x^2 - 2x^3 with x clamped to [0, 1]: 0 at the ground, 1/2 halfway,
- * 1 at and above the zone's top. */
+ * Shadow zone: the arc that grazes the ground runs up on both sides of
+ * its touching point. The one through an ear at height z_e touches the
+ * ground sqrt(2 R z_e) from the ear and, in the parabolic approximation,
+ * stands h = (D - sqrt(2 R z_e))^2 / 2R above the ground at horizontal
+ * distance D from the ear (0 nearer than the touching point): D = 3 km,
+ * R = 55 km, z_e = 1.7 m gives 59.9 m (81.8 m for an ear on the ground).
+ * A source at height z_s below it is in the shadow, x = D - sqrt(2 R z_e)
+ * - sqrt(2 R z_s) metres beyond the farthest point its own grazing ray
+ * reaches.
+ *
+ * Into the shadow the sound is the creeping wave that the curved rays
+ * diffract along the ground (the same problem as diffraction around a
+ * sphere of radius R, Fock's; for sound in a refracting atmosphere Pierce,
+ * Acoustics, 1981, ch. 9, and Berry & Daigle, JASA 83, 1988). With the
+ * effective wavenumber linear in height, k^2(z) = k^2 (1 + 2z / R), the
+ * height modes are Airy functions; over a rigid ground the first one,
+ * which decays slowest, has the horizontal wavenumber
+ * k + tau_1 (k / 2R^2)^(1/3), tau_1 = |a_1'| e^(i pi / 3), a_1' = -1.01879
+ * the first zero of Ai'. So its level falls by
+ *     beta = 20 log10(e) |a_1'| sin(pi / 3) (k / 2R^2)^(1/3)  dB per metre
+ * of x: 4.1 dB/km at 50 Hz for R = 55 km, growing as f^(1/3). The engine
+ * applies beta x at FG_SHADOW_REFERENCE_HZ, thunder's spectral maximum
+ * (Holmes et al. 1971, ~50 Hz), to every frequency: the gain is 1 on the
+ * lit side, continuous at the boundary, and falls without bound into the
+ * shadow (-41 dB 10 km in at R = 55 km). Not modelled: the higher
+ * frequencies' faster decay (f^(1/3): 1.6 times beta at 200 Hz) and the
+ * turbulent scattering that, near the ground upwind, keeps measured shadow
+ * zones within 20-30 dB of free field (Wiener & Keast, JASA 31, 1959). */
 #ifndef FULGUR_REFRACTION_INTERNAL_H
 #define FULGUR_REFRACTION_INTERNAL_H
 
@@ -29,12 +50,28 @@ double fg_refraction_travel_s(const double src[3], const double ear[3], double r
  * times its speed along the chord, over c. */
 double fg_refraction_path_slope(double chord_m, double radius_m);
 
-/* Top of the shadow zone at horizontal distance horizontal_m, metres
- * (0 for straight rays). */
-double fg_shadow_height_m(double horizontal_m, double radius_m);
+/* The frequency the shadow's decay is evaluated at, Hz. */
+#define FG_SHADOW_REFERENCE_HZ 50.0
 
-/* The fade-in gain of a source at height source_z_m whose horizontal
- * distance from the listener is horizontal_m: in [0, 1]. */
-double fg_shadow_gain(double source_z_m, double horizontal_m, double radius_m);
+/* Top of the shadow zone at horizontal distance horizontal_m from an ear
+ * ear_z_m above the ground (negative heights count as 0), metres (0 for
+ * straight rays). */
+double fg_shadow_height_m(double horizontal_m, double ear_z_m, double radius_m);
+
+/* How far a source at height source_z_m lies horizontally inside the
+ * shadow of an ear at height ear_z_m, horizontal_m away: metres, 0 on the
+ * lit side and for straight rays. */
+double fg_shadow_depth_m(double source_z_m, double ear_z_m, double horizontal_m,
+                         double radius_m);
+
+/* The creeping wave's decay beta at f_hz for sound speed c_m_s, dB per
+ * metre of shadow depth (0 for straight rays). */
+double fg_shadow_decay_db_m(double f_hz, double c_m_s, double radius_m);
+
+/* The gain of that source: 10^(-beta x / 20) with beta at
+ * FG_SHADOW_REFERENCE_HZ; 1 on the lit side, in (0, 1] inside (0 once it
+ * is below 10^-12, 240 dB down). */
+double fg_shadow_gain(double source_z_m, double ear_z_m, double horizontal_m, double radius_m,
+                      double c_m_s);
 
 #endif

@@ -75,9 +75,11 @@ void fg_bus_set_design_bands(fg_bus_set *s)
 {
     if (s->bands_designed)
         return;
+    fg_absorb_fit fit = {.valid = false};
     for (unsigned k = 0; k < FG_ABSORPTION_BANDS; k++) {
         fg_iir f;
-        fg_absorb_design(&f, &s->air, s->plan.centre_m[k], s->fs_hz);
+        /* each band starts from its nearer neighbour's fit */
+        fg_absorb_design(&f, &s->air, s->plan.centre_m[k], s->fs_hz, &fit);
         fg_iir_reset(&f);
         for (unsigned twin = 0; twin < 2; twin++)
             s->band[twin][k][0] = s->band[twin][k][1] = f;
@@ -85,9 +87,11 @@ void fg_bus_set_design_bands(fg_bus_set *s)
     s->bands_designed = true;
 }
 
-unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m)
+unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m, double *w_next)
 {
-    return FG_BUS_BAND0 + fg_band_nearest(&s->plan, r_m);
+    unsigned lo;
+    fg_band_locate(&s->plan, r_m, &lo, w_next);
+    return FG_BUS_BAND0 + lo;
 }
 
 void fg_bus_set_begin(fg_bus_set *s, uint32_t n)

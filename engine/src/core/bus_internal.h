@@ -1,8 +1,9 @@
 /* Filter buses: where the audio thread sums each ear's waves before the
  * air's filters, so filtering costs per bus, never per segment.
  *
- * Bus FG_BUS_DRY has no filter; FG_BUS_BAND0 + k carries sources near the
- * k-th ISO 9613-1 band's centre distance through that band's fitted IIR;
+ * Bus FG_BUS_DRY has no filter; FG_BUS_BAND0 + k carries sources between
+ * the (k-1)-th and (k+1)-th ISO 9613-1 band centres, each split between
+ * its two nearest bands, through that band's fitted IIR;
  * FG_BUS_FIR carries Abe's 200 Hz FIR. Each has a head-shadowed twin at
  * index + FG_BUS_PLAIN, which adds the far-ear shelf. The buses are shared
  * by every voice: the air's response depends only on the distance band. */
@@ -62,8 +63,10 @@ void fg_bus_set_deinit(fg_bus_set *s);
  * (tens of milliseconds). [sim-thread] */
 void fg_bus_set_design_bands(fg_bus_set *s);
 
-/* The band bus for a source r_m away. */
-unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m);
+/* The band buses for a source r_m away: the nearer one is returned, and
+ * *w_next is the share of the next (distance_bands_internal.h; 0 when the
+ * source takes the returned bus alone). [audio-thread] safe. */
+unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m, double *w_next);
 
 /* Starts a block of n frames on every bus. [audio-thread] */
 void fg_bus_set_begin(fg_bus_set *s, uint32_t n);

@@ -53,11 +53,11 @@ static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
     if (a >= (int64_t)play->frames)
         return FG_WAVE_PENDING;
     double peak = w.peak_pa;
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < FG_PLAY_BUSES; k++) {
         if (play->share[k] == 0.0)
             continue;
         w.peak_pa = peak * play->share[k];
-        float *out = fg_bus_pre(play->buses, play->bus + k * FG_BUS_PLAIN, play->ch);
+        float *out = fg_bus_pre(play->buses, play->bus[k], play->ch);
         if (!fg_abe_wave_render(&w, fs, 0, out, play->frames))
             return FG_WAVE_NON_FINITE;
     }

@@ -1,5 +1,5 @@
 /* What one ear hears of one event: distance, travel time (straight or
- * refracted), shadow-zone fade, the filter bus and the head-shadow share;
+ * refracted), shadow-zone decay, the filter bus and the head-shadow share;
  * the model's wave from them. For a still listener at the pose the voice
  * caches; for a moving one at the moment the wave arrives on the
  * listener's trajectory, with the Doppler rate there. */
@@ -15,11 +15,14 @@
 /* 1 - d travel/dt at least: the listener well below the speed of sound */
 #define MIN_CLOSING 0.1
 
-static unsigned bus_of(const fg_bus_set *buses, const fg_propagation_config *p, double r)
+/* The bus for a source r away, and the share of the next one. */
+static unsigned bus_of(const fg_bus_set *buses, const fg_propagation_config *p, double r,
+                       double *w_next)
 {
+    *w_next = 0.0;
     switch (p->absorption) {
     case FG_ABSORPTION_ISO9613:
-        return fg_bus_for_distance(buses, r);
+        return fg_bus_for_distance(buses, r, w_next);
     case FG_ABSORPTION_ABE_FIR:
         return r > p->abe_fir_distance_m ? FG_BUS_FIR : FG_BUS_DRY;
     case FG_ABSORPTION_OFF:
@@ -47,8 +50,9 @@ static double path_to(const fg_discharge_voice *v, const fg_event *ev, const dou
     if (pr->refraction_radius_m > 0) {
         travel = fg_refraction_travel_s(ev->mid, ear, pr->refraction_radius_m, c);
         *slope = fg_refraction_path_slope(r, pr->refraction_radius_m);
-        /* an image's fade is its source's: the height above ground */
-        gain *= fg_shadow_gain(fabs(ev->mid[2]), hypot(d[0], d[1]), pr->refraction_radius_m);
+        /* an image's shadow is its source's: the height above ground */
+        gain *= fg_shadow_gain(fabs(ev->mid[2]), ear[2], hypot(d[0], d[1]),
+                               pr->refraction_radius_m, c);
     }
     path->gain = gain;
     return travel;
@@ -60,7 +64,9 @@ static void hear(const fg_discharge_voice *v, const fg_event *ev, const fg_ear_p
 {
     const fg_propagation_config *pr = &v->propagation;
     v->model->wave(&v->sound, ev, path, out);
-    out->bus = (uint8_t)bus_of(buses, pr, path->r_m);
+    double w_next;
+    out->bus = (uint8_t)bus_of(buses, pr, path->r_m, &w_next);
+    out->band_w = (float)w_next;
     out->shadow = 0.0f;
     if (pr->head_shadow && ears->count == 2) {
         double axis[3], to_source[3];

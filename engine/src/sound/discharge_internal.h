@@ -43,6 +43,7 @@ typedef struct fg_event_ear {
         fg_abe_wave abe;  /* Abe's wave, arrival relative to the emission (abe_model.c) */
     };
     float shadow;         /* head shadow: the share sent to the shadowed twin */
+    float band_w;         /* the share sent to bus + 1, the next distance band */
     uint8_t bus;          /* the filter bus (bus_internal.h) */
 } fg_event_ear;
 
@@ -72,12 +73,17 @@ typedef struct fg_ear_path {
     double c_m_s;
 } fg_ear_path;
 
+#define FG_PLAY_BUSES 4
+
 /* Where ear ch of an event is added in this block, for one instance. */
 typedef struct fg_event_play {
     fg_bus_set *buses;
-    unsigned bus;         /* the plain bus; its shadowed twin is bus + FG_BUS_PLAIN */
+    /* the buses an ear's wave goes to and its share of each (a zero share
+     * is skipped): the distance band and the next one, each plain and
+     * head-shadowed (its twin, + FG_BUS_PLAIN) */
+    unsigned bus[FG_PLAY_BUSES];
+    double share[FG_PLAY_BUSES];
     unsigned ch;
-    double share[2];      /* of the plain bus and of the twin; a zero share is skipped */
     double origin_frame;  /* the instance's emission, samples after the block's start */
     double offset_s;      /* the instance's emission after the voice's */
     double fs_hz;

@@ -44,19 +44,23 @@ static inline fg_event *fg_instance_event(fg_discharge_voice *v, const fg_instan
 }
 
 /* Adds ear ch of event ev, as that ear hears it, to the buses through
- * play (the instance's), splitting it with the head-shadowed twin bus.
+ * play (the instance's), splitting it between two distance bands and
+ * each with its head-shadowed twin.
  * Returns its status and its first and last sample relative to the block. */
 static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg_event_ear *ear,
                                                     fg_event_play *play, unsigned ch,
                                                     fg_discharge_add_fn add, long *first,
                                                     long *last)
 {
-    double shadow = ear->shadow;
-    play->bus = ear->bus;
+    double shadow = ear->shadow, next = ear->band_w;
     play->ch = ch;
-    /* shares below 2 % go whole to one side */
-    play->share[0] = shadow < 0.02 ? 1.0 : shadow > 0.98 ? 0.0 : 1.0 - shadow;
-    play->share[1] = shadow < 0.02 ? 0.0 : shadow > 0.98 ? 1.0 : shadow;
+    /* head-shadow shares below 2 % go whole to one side */
+    double twin = shadow < 0.02 ? 0.0 : shadow > 0.98 ? 1.0 : shadow;
+    for (unsigned k = 0; k < FG_PLAY_BUSES; k++) {
+        unsigned band = k / 2, shadowed = k % 2;
+        play->bus[k] = ear->bus + band + shadowed * FG_BUS_PLAIN;
+        play->share[k] = (shadowed ? twin : 1.0 - twin) * (band ? next : 1.0 - next);
+    }
     return add(ev, ear, play, first, last);
 }
 

@@ -54,11 +54,11 @@ static fg_wave_status wm_add(const fg_event *ev, const fg_event_ear *ear,
         return FG_WAVE_NON_FINITE;
     fg_wm_event_span(&we, first, last);
     fg_wave_status status = FG_WAVE_DONE;
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < FG_PLAY_BUSES; k++) {
         if (play->share[k] == 0.0)
             continue;
         we.shape.b = ear->wm.b * play->share[k];
-        status = fg_wm_accum_add(fg_bus_accum(play->buses, play->bus + k * FG_BUS_PLAIN, ch), &we);
+        status = fg_wm_accum_add(fg_bus_accum(play->buses, play->bus[k], ch), &we);
         if (status == FG_WAVE_NON_FINITE)
             break;
     }
