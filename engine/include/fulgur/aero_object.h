@@ -52,8 +52,9 @@ extern "C" {
 
 /* The Reynolds numbers, of a source's cross-flow and the texture's
  * reference_m, over which the texture's pitch law holds: from the onset
- * of shedding to the drag crisis. A source outside plays on by the same
- * law and is counted in fg_aero_report.beyond_range_blocks. */
+ * of shedding to the drag crisis. A source below sheds no tone and is
+ * silent; one above plays on by the same laws and is counted in
+ * fg_aero_report.beyond_range_blocks. */
 #define FG_AERO_RE_MIN 47.0
 #define FG_AERO_RE_MAX 2e5
 
@@ -144,7 +145,7 @@ typedef struct fg_aero_report {
     uint32_t sources;             /* as split at the post */
     uint64_t blocks;              /* blocks rendered */
     uint64_t beyond_range_blocks; /* blocks in which a sounding source's Reynolds
-                                   * number lay outside [FG_AERO_RE_MIN, FG_AERO_RE_MAX] */
+                                   * number lay above FG_AERO_RE_MAX */
     double max_speed_m_s;         /* the fastest cross-flow a source has met */
 } fg_aero_report;
 

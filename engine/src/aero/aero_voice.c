@@ -21,7 +21,6 @@
 
 #define RETARDED_STEPS 3
 #define WORK_SAMPLES 32 /* one work unit per this many samples of a source and ear */
-#define QUIET_SPEED_M_S 1e-6
 
 static void absorb(const fg_listener *pose, uint64_t number, void *arg)
 {
@@ -61,8 +60,10 @@ static double evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, fg
     out->tau_s = tau;
     memset(out->coef, 0, sizeof out->coef);
     out->lookup = prev->lookup;
-    double rate = 0.0;
-    if (speed > QUIET_SPEED_M_S) {
+    double rate = speed / t->speed_m_s * t->sample_rate_hz;
+    /* below the onset of shedding the body sheds no tone: silent (the
+     * level law has it 120 dB below v0's there already for Re0 ~ 10^4) */
+    if (speed * t->reference_m / t->viscosity_m2_s >= FG_AERO_RE_MIN) {
         fg_vec3 drag = fg_v3_scale(u, 1.0 / speed), lift, axial = fg_v3(0, 0, 0);
         if (t->dims == 2) {
             double a = atan2(fg_v3_dot(drag, fg_v3_load(h.up)), fg_v3_dot(drag, fg_v3_load(h.forward)));
@@ -81,7 +82,6 @@ static double evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, fg
         out->coef[0] = k * fg_v3_dot(d, drag);
         out->coef[1] = k * fg_v3_dot(d, lift) * out->lookup.lift_sign;
         out->coef[2] = k * fg_v3_dot(d, axial);
-        rate = speed / t->speed_m_s * t->sample_rate_hz;
     }
     out->position = prev->position + 0.5 * (prev_rate + rate) * (tau - prev->tau_s);
     *rate_out = rate;
@@ -225,8 +225,7 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
             }
             bool sounding = envelope(v, e1.tau_s) > 0.0 || envelope(v, s->end[ch].tau_s) > 0.0;
             if (sounding) {
-                double re = speed * t->reference_m / t->viscosity_m2_s;
-                if (speed > QUIET_SPEED_M_S && (re < FG_AERO_RE_MIN || re > FG_AERO_RE_MAX))
+                if (speed * t->reference_m / t->viscosity_m2_s > FG_AERO_RE_MAX)
                     beyond = true;
                 fastest = fmax(fastest, speed);
                 if (*block->work_left >= units) {
