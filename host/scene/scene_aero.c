@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "common/aero_texture_file.h"
 #include "scene_internal.h"
@@ -146,6 +147,10 @@ static int load_texture(const cJSON *obj, const char *path, const char *dir,
         snprintf(file, sizeof file, "%s", name->valuestring);
     else
         snprintf(file, sizeof file, "%s/%s", dir, name->valuestring);
+    struct stat st;
+    if (stat(file, &st) == 0 && !S_ISREG(st.st_mode)) /* a FIFO would stall the parse */
+        return json_fail(err, err_size, at, "%s: not a regular file (a device, FIFO or "
+                                            "directory)", file);
     char why[512];
     if (aero_texture_load(file, out, why, sizeof why) != 0)
         return json_fail(err, err_size, at, "%s", why);

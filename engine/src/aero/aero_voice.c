@@ -2,9 +2,10 @@
  *
  * For each source and ear, the block's last sample is heard from the
  * emission time tau solving tau = t - |q(t) - o(tau)| / c (q the ear on the
- * listener's path, o the source on the object's); three fixed-point steps
- * from the previous block's tau converge to (speed / c)^3 of the step, far
- * below a sample. There the source's flow, its texture rate u / v0 and the
+ * listener's path, o the source on the object's); two fixed-point steps
+ * from the previous block's tau advanced by the block (off by at most
+ * speed / c of it) leave (speed / c)^3 of the block, 2.7 us at Mach 0.1
+ * for 128 frames at 48 kHz: a tenth of a sample. There the source's flow, its texture rate u / v0 and the
  * dipole's projection on the ear are evaluated; the texture position is
  * the integral of the rate over emission time (trapezoids, exact at a
  * steady speed). The block's samples interpolate tau, the position and the
@@ -19,7 +20,7 @@
 #include "fg_math.h"
 #include "fg_vec3.h"
 
-#define RETARDED_STEPS 3
+#define RETARDED_STEPS 2
 #define WORK_SAMPLES 32 /* one work unit per this many samples of a source and ear */
 
 static void absorb(const fg_listener *pose, uint64_t number, void *arg)
@@ -158,6 +159,9 @@ static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg
     const fg_aero_texture_desc *t = v->tex;
     const uint32_t comps = t->components;
     const double inv = 1.0 / frames;
+    /* tau runs monotonically from e0 to e1: inside the steady part at both
+     * ends, it is inside between */
+    const bool steady = envelope(v, e0->tau_s) == 1.0 && envelope(v, e1->tau_s) == 1.0;
     for (unsigned k = 0; k < m.count; k++) {
         const fg_aero_direction *dir = &t->direction[m.index[k]];
         const uint32_t f = dir->frames;
@@ -166,7 +170,7 @@ static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg
         for (uint32_t n = 0; n < frames; n++) {
             double u = n * inv;
             double tau = e0->tau_s + (e1->tau_s - e0->tau_s) * u;
-            double env = envelope(v, tau);
+            double env = steady ? 1.0 : envelope(v, tau);
             if (env <= 0.0)
                 continue;
             double x = e0->position + (e1->position - e0->position) * u - base;
@@ -217,8 +221,9 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
         for (unsigned ch = 0; ch < ears.count; ch++) {
             fg_aero_end e1;
             double rate;
-            double speed = evaluate(v, s, fg_v3_load(ears.pos[ch]), t1, s->end[ch].tau_s,
-                                    &s->end[ch], s->rate[ch], c, &e1, &rate);
+            double speed = evaluate(v, s, fg_v3_load(ears.pos[ch]), t1,
+                                    s->end[ch].tau_s + (t1 - t0), &s->end[ch], s->rate[ch], c,
+                                    &e1, &rate);
             if (!end_finite(&e1)) {
                 fg_count(&block->counters->non_finite_voices, 1);
                 return true;
