@@ -3,8 +3,10 @@
 # fulgur render of the aero examples (examples/aero/), with numbers that
 # can fail: the wires' aeolian tone at Strouhal's f = St v / D (the
 # texture's shedding frequency times v / v0), the thrown stick silent
-# until its emission has had time to arrive, and every example's peak
-# within the range a body of its size and speed gives.
+# until its emission has had time to arrive, the sword loudest at its
+# fastest, the fence's bars before the bolt's thunder and the thunder
+# after, and every example's peak within the range a body of its size
+# and speed gives.
 set -u
 fulgur=$1
 dir=$2
@@ -46,6 +48,13 @@ check_peak() { # name lo hi
 }
 check_peak thrown_stick 40 80
 check_peak wind_wires 50 95
+check_peak sword_swing 40 90
+
+# the swing is fastest halfway (0.2 + 0.125 s), 1.5 m away: loudest then
+"$fulgur" analyze "$tmp/sword_swing.wav" --waveform "$tmp/sword.dat" >/dev/null
+awk '$1 !~ /#/ {a = $3 > -$2 ? $3 : -$2; if (a > m) {m = a; at = $1}}
+     END {printf "sword_swing: loudest at %.4f s\n", at; exit !(at >= 0.30 && at <= 0.36)}' \
+    "$tmp/sword.dat" || { echo "sword_swing: not loudest at the swing's fastest"; fail=1; }
 
 # the fence and the bolt in one engine: the bars' whistle before the
 # thunder can arrive (1 km: 2.9 s after 0.5 s), the thunder after
