@@ -270,6 +270,11 @@ static int render_file(const scene *s, const char *out_path, const render_level 
     if (rep.capped)
         fprintf(stderr, "fulgur: stopped at the %.0f s cap with discharges still sounding\n",
                 SCENE_MAX_DURATION_S);
+    if (rep.aero_beyond_range)
+        fprintf(stderr, "fulgur: warning: %zu aero objects met cross-flows outside their "
+                        "textures' Reynolds range (%g to %g): played on by the same laws, "
+                        "less accurately (docs/aero-objects.md)\n",
+                rep.aero_beyond_range, FG_AERO_RE_MIN, FG_AERO_RE_MAX);
     double wall = (double)(monotonic_now_ns() - t0) * 1e-9;
     double seconds = (double)rep.frames / s->sample_rate_hz;
     double full_scale_pa = 1.0 / w.scale;

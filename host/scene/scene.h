@@ -44,6 +44,34 @@ typedef struct scene_discharge {
     const cJSON *generator;    /* the generator object inside scene.json, or NULL */
 } scene_discharge;
 
+/* How an aero object moves (docs/scene-format.md, "aero_objects"). */
+typedef enum scene_motion_kind {
+    SCENE_MOTION_FIXED = 0, /* still: wind mode */
+    SCENE_MOTION_SWING = 1, /* about a fixed pivot */
+    SCENE_MOTION_THROW = 2  /* a ballistic arc, spinning */
+} scene_motion_kind;
+
+typedef struct scene_motion {
+    scene_motion_kind kind;
+    double position_m[3];   /* fixed, throw: the origin (at the start); swing: the pivot */
+    double axis[3], normal[3]; /* unit, at the start */
+    double turn_axis[3];    /* unit: what the swing and the spin turn about */
+    double peak_rad_s;      /* swing: speed peak * sin^2(pi (t - start) / duration) */
+    double start_s, duration_s;
+    double velocity_m_s[3]; /* throw: at the start */
+    double spin_rad_s;
+    double gravity_m_s2;    /* throw: along -z */
+} scene_motion;
+
+/* One aero object: what fg_aero_object_post takes (its texture owned by
+ * the scene, its first pose the motion's at its emit time, the scene's
+ * wind) and how it moves. */
+typedef struct scene_aero {
+    fg_aero_object post;
+    fg_aero_texture *texture;
+    scene_motion motion;
+} scene_aero;
+
 /* What the picture looks through (the "camera" block). */
 typedef struct scene_camera {
     bool given;                /* false: none in the file (see scene_camera_framing) */
@@ -69,6 +97,8 @@ typedef struct scene {
     scene_discharge *discharges;
     size_t discharge_count;
     scene_camera camera;
+    scene_aero *aeros;         /* "aero_objects" */
+    size_t aero_count;
     cJSON *json;               /* the parsed document the generator specs live in */
 } scene;
 
@@ -76,7 +106,8 @@ typedef struct scene {
  * or -1 with the message in err; *out is then zeroed. */
 int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err_size);
 
-/* Reads the file at path and parses it; the message of a read error names
+/* Reads the file at path and parses it (texture files named in it are
+ * found relative to its folder); the message of a read error names
  * the file. A path that is not a regular file (a device, FIFO, directory)
  * or a file over SCENE_MAX_FILE_BYTES is refused before it is read. */
 int scene_load(const char *path, scene *out, char *err, size_t err_size);
@@ -93,6 +124,14 @@ int scene_parse_with(const char *text, size_t size, const char *const *sets, siz
                      scene *out, char *err, size_t err_size);
 int scene_load_with(const char *path, const char *const *sets, size_t set_count, scene *out,
                     char *err, size_t err_size);
+
+/* As scene_parse_with, the texture files it names found relative to dir
+ * (NULL: the working directory). */
+int scene_parse_in(const char *text, size_t size, const char *const *sets, size_t set_count,
+                   const char *dir, scene *out, char *err, size_t err_size);
+
+/* The folder of the file at path, in buf (NULL when path names none). */
+const char *scene_dir_of(const char *path, char *buf, size_t size);
 
 /* Runs the generators, once per parsed scene: every discharge gets its tree.
  * Returns 0, or -1 with a message naming the generator's path; the scene is
@@ -115,6 +154,9 @@ void scene_deinit(scene *s);
  * normalised lerp, held before the first and after the last pose; velocity
  * is the path's slope (0 when held). */
 void scene_listener_at(const scene *s, double t_s, fg_listener *out);
+
+/* Aero object a's pose at t (time_s = t). */
+void scene_aero_pose_at(const scene_aero *a, double t_s, fg_aero_pose *out);
 
 /* What a discharge happens among, as the picture shows it. */
 typedef enum scene_apparatus_kind {

@@ -42,4 +42,11 @@ int scene_check_tree(const fg_node *nodes, size_t count, const char *nodes_path,
  * appended to s->discharges. The template is kept inside json. */
 int scene_parse_random(cJSON *json, scene *s, char *err, size_t err_size);
 
+/* "wind" and "aero_objects" (absent: nothing to do) into s->aeros, their
+ * texture files read relative to dir (NULL: the working directory). */
+int scene_parse_aero(const cJSON *json, const char *dir, scene *s, char *err, size_t err_size);
+
+/* Frees s->aeros and their textures. */
+void scene_aero_free(scene *s);
+
 #endif

@@ -15,7 +15,7 @@
 static const char *const top_keys[] = {
     "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
     "temperature_c", "humidity", "pressure", "propagation", "listener", "discharges",
-    "random", "camera", "description", NULL};
+    "random", "camera", "description", "aero_objects", "wind", NULL};
 
 static int syntax_error(const char *text, const char *at, const char *what, char *err,
                         size_t err_size)
@@ -82,11 +82,13 @@ static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_siz
 static int parse_discharges(const cJSON *json, scene *s, char *err, size_t err_size)
 {
     const cJSON *list = cJSON_GetObjectItemCaseSensitive(json, "discharges");
-    if (!list && cJSON_GetObjectItemCaseSensitive(json, "random"))
-        return 0; /* random discharges only */
+    if (!list && (cJSON_GetObjectItemCaseSensitive(json, "random") ||
+                  cJSON_GetObjectItemCaseSensitive(json, "aero_objects")))
+        return 0; /* random discharges or aero objects only */
     if (!list)
         return json_fail(err, err_size, "discharges",
-                         "required (an array of discharges), unless \"random\" is given");
+                         "required (an array of discharges), unless \"random\" or "
+                         "\"aero_objects\" is given");
     if (!cJSON_IsArray(list) || cJSON_GetArraySize(list) == 0)
         return json_fail(err, err_size, "discharges", "expected a non-empty array");
     size_t n = (size_t)cJSON_GetArraySize(list);
@@ -107,6 +109,10 @@ static int parse_discharges(const cJSON *json, scene *s, char *err, size_t err_s
 /* The scene must end, and nothing may be set to emit after its end. */
 static int check_duration(const scene *s, char *err, size_t err_size)
 {
+    for (size_t i = 0; i < s->aero_count && s->duration_s == 0; i++)
+        if (s->aeros[i].post.duration_s == 0)
+            return json_fail(err, err_size, "duration",
+                             "required, since aero_objects[%zu] has no duration", i);
     char item[JSON_PATH_MAX], path[JSON_PATH_MAX];
     for (size_t i = 0; i < s->discharge_count; i++) {
         const scene_discharge *d = &s->discharges[i];
@@ -139,8 +145,8 @@ static void drop_parsed_trees(cJSON *json)
         cJSON_GetObjectItemCaseSensitive(json, "random (template)"), "tree");
 }
 
-int scene_parse_with(const char *text, size_t size, const char *const *sets, size_t set_count,
-                     scene *out, char *err, size_t err_size)
+int scene_parse_in(const char *text, size_t size, const char *const *sets, size_t set_count,
+                   const char *dir, scene *out, char *err, size_t err_size)
 {
     memset(out, 0, sizeof *out);
     const char *end = NULL;
@@ -168,6 +174,7 @@ int scene_parse_with(const char *text, size_t size, const char *const *sets, siz
         scene_parse_random(json, out, err, err_size) == 0 &&
         scene_parse_camera(cJSON_GetObjectItemCaseSensitive(json, "camera"), out, err,
                            err_size) == 0 &&
+        scene_parse_aero(json, dir, out, err, err_size) == 0 &&
         check_duration(out, err, err_size) == 0) {
         drop_parsed_trees(json);
         rc = 0;
@@ -176,6 +183,12 @@ int scene_parse_with(const char *text, size_t size, const char *const *sets, siz
     if (rc != 0)
         scene_deinit(out);
     return rc;
+}
+
+int scene_parse_with(const char *text, size_t size, const char *const *sets, size_t set_count,
+                     scene *out, char *err, size_t err_size)
+{
+    return scene_parse_in(text, size, sets, set_count, NULL, out, err, err_size);
 }
 
 int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err_size)
@@ -240,6 +253,16 @@ int scene_read_file(const char *path, char **text, size_t *size, char *err, size
     return 0;
 }
 
+const char *scene_dir_of(const char *path, char *buf, size_t size)
+{
+    snprintf(buf, size, "%s", path);
+    char *slash = strrchr(buf, '/');
+    if (!slash)
+        return NULL;
+    slash[slash == buf ? 1 : 0] = '\0'; /* "/x.json": the root */
+    return buf;
+}
+
 int scene_load_with(const char *path, const char *const *sets, size_t set_count, scene *out,
                     char *err, size_t err_size)
 {
@@ -248,7 +271,9 @@ int scene_load_with(const char *path, const char *const *sets, size_t set_count,
     size_t size;
     if (scene_read_file(path, &text, &size, err, err_size) != 0)
         return -1;
-    int rc = scene_parse_with(text, size, sets, set_count, out, err, err_size);
+    char dir[4096];
+    int rc = scene_parse_in(text, size, sets, set_count, scene_dir_of(path, dir, sizeof dir),
+                            out, err, err_size);
     free(text);
     return rc;
 }
@@ -265,6 +290,7 @@ void scene_deinit(scene *s)
     for (size_t i = 0; i < s->discharge_count; i++)
         scene_discharge_free_tree(&s->discharges[i]);
     free(s->discharges);
+    scene_aero_free(s);
     free(s->poses);
     cJSON_Delete(s->json);
     memset(s, 0, sizeof *s);

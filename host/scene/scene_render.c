@@ -19,6 +19,10 @@ typedef struct render_job {
     fg_engine *engine;
     size_t *order;          /* the discharge indices by emit time, then index */
     size_t next;            /* the next of order to post */
+    fg_voice_id *aero_ids;  /* per aero object: its voice once posted, 0 before */
+    bool *aero_done;        /* posted and since collected */
+    bool *aero_warned;      /* counted in aero_beyond_range */
+    size_t aeros_posted;
     float *planes[2];
     size_t segments;
     double pose_period_s;   /* between published poses */
@@ -38,7 +42,7 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
     job->pose_period_s = fmax(1.0 / POSE_HZ, (block_s + POSE_LEAD_S) / POSES_PER_BLOCK_MAX);
     fg_engine_config cfg;
     scene_engine_config(s, &cfg);
-    cfg.max_voices = (uint32_t)s->discharge_count;
+    cfg.max_voices = (uint32_t)(s->discharge_count + s->aero_count);
     cfg.segment_capacity = events > UINT32_MAX ? UINT32_MAX : (uint32_t)events;
     fg_result r = fg_engine_create(&cfg, &job->engine);
     if (r != FG_OK) {
@@ -47,11 +51,33 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
         return r;
     }
     job->order = scene_post_order(s);
+    job->aero_ids = calloc(s->aero_count + 1, sizeof *job->aero_ids);
+    job->aero_done = calloc(s->aero_count + 1, sizeof *job->aero_done);
+    job->aero_warned = calloc(s->aero_count + 1, sizeof *job->aero_warned);
     for (uint32_t ch = 0; ch < s->channels; ch++)
         job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float));
-    if (!job->order || !job->planes[0] || (s->channels == 2 && !job->planes[1])) {
+    if (!job->order || !job->aero_ids || !job->aero_done || !job->aero_warned || !job->planes[0] || (s->channels == 2 && !job->planes[1])) {
         snprintf(err, err_size, "out of memory");
         return FG_ERR_NO_MEMORY;
+    }
+    return FG_OK;
+}
+
+/* Publishes aero object i's pose at t, unless it has finished. */
+static fg_result publish_aero_pose(render_job *job, size_t i, double t, char *err,
+                                   size_t err_size)
+{
+    if (!job->aero_ids[i] || job->aero_done[i])
+        return FG_OK;
+    fg_aero_pose pose;
+    scene_aero_pose_at(&job->s->aeros[i], t, &pose);
+    fg_result r = fg_aero_object_set_pose(job->engine, job->aero_ids[i], &pose);
+    if (r == FG_ERR_NOT_FOUND) {
+        job->aero_done[i] = true; /* finished and collected */
+    } else if (r != FG_OK) {
+        snprintf(err, err_size, "aero_objects[%zu]: its pose at %.6f s: %s (faster than "
+                                "%g m/s?)", i, t, fg_result_str(r), FG_AERO_MAX_SPEED_M_S);
+        return r;
     }
     return FG_OK;
 }
@@ -71,7 +97,41 @@ static fg_result post_due(render_job *job, double horizon_s, char *err, size_t e
             return r;
         }
     }
+    for (size_t i = 0; i < job->s->aero_count; i++) {
+        const fg_aero_object *o = &job->s->aeros[i].post;
+        if (job->aero_ids[i] || o->emit_time_s >= horizon_s)
+            continue;
+        fg_result r = fg_aero_object_post(job->engine, o, &job->aero_ids[i]);
+        if (r != FG_OK) {
+            snprintf(err, err_size, "aero_objects[%zu]: the engine refused it: %s", i,
+                     fg_result_str(r));
+            return r;
+        }
+        job->aeros_posted++;
+        /* the poses from its emission on that the others already have */
+        for (uint64_t k = (uint64_t)ceil(o->emit_time_s / job->pose_period_s); k < job->next_pose;
+             k++) {
+            if ((r = publish_aero_pose(job, i, (double)k * job->pose_period_s, err, err_size)) !=
+                FG_OK)
+                return r;
+        }
+    }
     return FG_OK;
+}
+
+/* Counts in the report the live aero objects that have met speeds beyond
+ * their texture's Reynolds range (each once). */
+static void count_beyond_range(render_job *job, scene_render_report *report)
+{
+    for (size_t i = 0; i < job->s->aero_count; i++) {
+        fg_aero_report a;
+        if (job->aero_ids[i] && !job->aero_done[i] && !job->aero_warned[i] &&
+            fg_aero_object_get_report(job->engine, job->aero_ids[i], &a) == FG_OK &&
+            a.beyond_range_blocks > 0) {
+            job->aero_warned[i] = true;
+            report->aero_beyond_range++;
+        }
+    }
 }
 
 /* Publishes the listener's poses up to horizon_s. */
@@ -88,6 +148,9 @@ static fg_result publish_poses(render_job *job, double horizon_s, char *err, siz
                                     "parallel directions?)", t, fg_result_str(r));
             return r;
         }
+        for (size_t i = 0; i < job->s->aero_count; i++)
+            if ((r = publish_aero_pose(job, i, t, err, err_size)) != FG_OK)
+                return r;
     }
     return FG_OK;
 }
@@ -113,11 +176,13 @@ static fg_result run(render_job *job, const scene_render_sink *sink, scene_rende
         }
         if ((r = sink->block(sink->context, job->planes, n, err, err_size)) != FG_OK)
             return r;
+        count_beyond_range(job, report);
         fg_engine_collect(job->engine);
         report->frames += n;
         fg_engine_get_report(job->engine, &report->engine);
         if (s->duration_s == 0 && job->next == s->discharge_count &&
-            report->engine.finished == s->discharge_count)
+            job->aeros_posted == s->aero_count &&
+            report->engine.finished == s->discharge_count + s->aero_count)
             return FG_OK;
     }
     report->capped = s->duration_s == 0;
@@ -146,6 +211,9 @@ fg_result scene_render(const scene *s, const scene_render_sink *sink,
         fg_engine_get_report(job.engine, &report->engine);
     fg_engine_destroy(job.engine);
     free(job.order);
+    free(job.aero_ids);
+    free(job.aero_done);
+    free(job.aero_warned);
     free(job.planes[0]);
     free(job.planes[1]);
     return rc;

@@ -7,7 +7,8 @@
  * discharges due before the block's end plus SCENE_POST_LEAD_S posted in
  * time order (so that the engine prepares them off the audio path, as a
  * simulation thread would), fg_engine_render, the block handed to the sink,
- * fg_engine_collect. A scene without a duration ends with the block in which
+ * fg_engine_collect. Aero objects are posted as the discharges are, and
+ * their poses published with the listener's, sampled from their motion. A scene without a duration ends with the block in which
  * the last discharge fell silent, or at SCENE_MAX_DURATION_S. */
 #ifndef HOST_SCENE_SCENE_RENDER_H
 #define HOST_SCENE_SCENE_RENDER_H
@@ -36,6 +37,8 @@ typedef struct scene_render_report {
     uint64_t frames;           /* rendered and handed to the sink */
     size_t segments;           /* of every discharge's tree */
     bool capped;               /* no duration, and still sounding at SCENE_MAX_DURATION_S */
+    size_t aero_beyond_range;  /* aero objects that met a speed outside their texture's
+                                * Reynolds range (fg_aero_report.beyond_range_blocks) */
     fg_engine_report engine;   /* the engine's counters at the end */
 } scene_render_report;
 

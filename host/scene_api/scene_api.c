@@ -90,7 +90,9 @@ fg_result fgs_scene_load(const char *path, const char *const *sets, size_t set_c
     if (scene_read_file(path, &text, &size, m.text, m.size) != 0)
         return FG_ERR_IO;
     scene s;
-    int rc = scene_parse_with(text, size, sets, set_count, &s, m.text, m.size);
+    char dir[4096];
+    int rc = scene_parse_in(text, size, sets, set_count, scene_dir_of(path, dir, sizeof dir), &s,
+                            m.text, m.size);
     free(text);
     return parsed(rc, &s, out, &m);
 }

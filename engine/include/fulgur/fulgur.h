@@ -3,6 +3,7 @@
 #define FULGUR_FULGUR_H
 
 #include "fulgur/aero.h"
+#include "fulgur/aero_object.h"
 #include "fulgur/charges.h"
 #include "fulgur/defs.h"
 #include "fulgur/field_scene.h"

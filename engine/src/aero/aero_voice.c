@@ -1,0 +1,271 @@
+/* The aero object's voice on the audio thread: adopt and render.
+ *
+ * For each source and ear, the block's last sample is heard from the
+ * emission time tau solving tau = t - |q(t) - o(tau)| / c (q the ear on the
+ * listener's path, o the source on the object's); two fixed-point steps
+ * from the previous block's tau advanced by the block (off by at most
+ * speed / c of it) leave (speed / c)^3 of the block, 2.7 us at Mach 0.1
+ * for 128 frames at 48 kHz: a tenth of a sample. There the source's flow, its texture rate u / v0 and the
+ * dipole's projection on the ear are evaluated; the texture position is
+ * the integral of the rate over emission time (trapezoids, exact at a
+ * steady speed). The block's samples interpolate tau, the position and the
+ * projections linearly from the block's start, so the pitch follows the
+ * Doppler rate d tau / dt and the texture is read at a fractional
+ * position. Wait-free and bounded: a fixed number of steps per source and
+ * ear, the per-block work bound, no allocation. */
+#include <math.h>
+#include <string.h>
+
+#include "aero_voice_internal.h"
+#include "fg_math.h"
+#include "fg_vec3.h"
+
+#define RETARDED_STEPS 2
+#define WORK_SAMPLES 32 /* one work unit per this many samples of a source and ear */
+
+static void absorb(const fg_listener *pose, uint64_t number, void *arg)
+{
+    fg_trajectory_push(arg, pose, number);
+}
+
+static fg_vec3 source_at(const fg_head *h, double along_m)
+{
+    return fg_v3_add(fg_v3_load(h->position), fg_v3_scale(fg_v3_load(h->right), along_m));
+}
+
+/* The flow over source s at emission time tau and what ear q hears of it:
+ * fills *out (tau, lookup, coef; position from prev, advanced by the
+ * rate), returns the cross-flow speed. */
+static double evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, fg_vec3 q,
+                       double t_s, double tau_guess, const fg_aero_end *prev, double prev_rate,
+                       double c, fg_aero_end *out, double *rate_out)
+{
+    fg_head h;
+    double tau = tau_guess;
+    for (int i = 0; i < RETARDED_STEPS; i++) {
+        fg_trajectory_head(&v->path, tau, &h);
+        tau = t_s - fg_v3_len(fg_v3_sub(q, source_at(&h, s->along_m))) / c;
+    }
+    fg_trajectory_head(&v->path, tau, &h);
+    fg_vec3 o = source_at(&h, s->along_m), d = fg_v3_sub(q, o);
+    double r = fg_v3_len(d);
+    fg_vec3 axis = fg_v3_load(h.right);
+    fg_vec3 vel = fg_v3_add(fg_v3_load(h.velocity), fg_v3_scale(fg_v3_load(h.right_rate), s->along_m));
+    double w[3];
+    fg_aero_wind_at(&v->wind, tau, w);
+    fg_vec3 u = fg_v3_sub(fg_v3_load(w), vel); /* the air, as the source sees it */
+    const fg_aero_texture_desc *t = v->tex;
+    if (t->dims == 2 || t->shape == FG_AERO_CLUB)
+        u = fg_v3_sub(u, fg_v3_scale(axis, fg_v3_dot(u, axis))); /* the cross-flow */
+    double speed = fg_v3_len(u);
+    out->tau_s = tau;
+    memset(out->coef, 0, sizeof out->coef);
+    out->lookup = prev->lookup;
+    double rate = speed / t->speed_m_s * t->sample_rate_hz;
+    /* below the onset of shedding the body sheds no tone: silent (the
+     * level law has it 120 dB below v0's there already for Re0 ~ 10^4) */
+    if (speed * t->reference_m / t->viscosity_m2_s >= FG_AERO_RE_MIN) {
+        fg_vec3 drag = fg_v3_scale(u, 1.0 / speed), lift, axial = fg_v3(0, 0, 0);
+        if (t->dims == 2) {
+            double a = atan2(fg_v3_dot(drag, fg_v3_load(h.up)), fg_v3_dot(drag, fg_v3_load(h.forward)));
+            fg_aero_texture_lookup(v->texture, a, &out->lookup);
+            lift = fg_v3_cross(axis, drag);
+        } else {
+            fg_aero_texture_lookup(v->texture, 0.0, &out->lookup);
+            fg_vec3 z = fg_v3_sub(axis, fg_v3_scale(drag, fg_v3_dot(axis, drag)));
+            if (fg_v3_len(z) < 1e-6) /* a sphere's flow along its axis */
+                z = fg_v3_load(h.forward);
+            axial = fg_v3_unit(fg_v3_sub(z, fg_v3_scale(drag, fg_v3_dot(z, drag))));
+            lift = fg_v3_cross(axial, drag);
+        }
+        double k = fg_aero_pressure_scale(v->texture, speed) * s->span_m * v->gain /
+                   (4.0 * FG_PI * c * r * r);
+        out->coef[0] = k * fg_v3_dot(d, drag);
+        out->coef[1] = k * fg_v3_dot(d, lift) * out->lookup.lift_sign;
+        out->coef[2] = k * fg_v3_dot(d, axial);
+    }
+    out->position = prev->position + 0.5 * (prev_rate + rate) * (tau - prev->tau_s);
+    *rate_out = rate;
+    return speed;
+}
+
+static double unit_clamp(double x)
+{
+    return x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x;
+}
+
+/* The emission's envelope at emission time tau. */
+static double envelope(const fg_aero_voice *v, double tau)
+{
+    double in = (tau - v->emit_s) / FG_AERO_FADE_S, out = (v->end_s + FG_AERO_FADE_S - tau) / FG_AERO_FADE_S;
+    return unit_clamp(in) * unit_clamp(out);
+}
+
+static void adopt(void *voice, const fg_block_context *block)
+{
+    fg_aero_voice *v = voice;
+    const double fs = block->cfg->sample_rate_hz, c = block->cfg->speed_of_sound_m_s;
+    double t0 = block->start_frame / fs;
+    fg_pose_queue_drain(&v->queue, &v->poses_seen, absorb, &v->path);
+    if (v->emit_s < 0.0)
+        v->emit_s = t0;
+    v->end_s = v->duration_s > 0.0 ? v->emit_s + v->duration_s : INFINITY;
+    for (uint32_t i = 0; i < v->source_count; i++) {
+        fg_aero_source_state *s = &v->source[i];
+        for (unsigned ch = 0; ch < block->ears->count; ch++) {
+            fg_aero_end start = {.tau_s = t0, .lookup = {.weight = {1.0f, 0.0f}, .lift_sign = 1.0f}};
+            double rate;
+            (void)evaluate(v, s, fg_v3_load(block->ears->pos[ch]), t0, t0, &start, 0.0, c,
+                           &s->end[ch], &rate);
+            s->end[ch].position = 0.0;
+            s->rate[ch] = rate;
+        }
+    }
+}
+
+/* Weight per distinct texture direction of the two ends' lookups. */
+typedef struct direction_mix {
+    uint32_t index[4];
+    double a0[4][3], a1[4][3]; /* weight times coef at the block's start and end */
+    unsigned count;
+} direction_mix;
+
+static void mix_add(direction_mix *m, uint32_t index, float weight, const double coef[3], int end)
+{
+    if (weight == 0.0f)
+        return;
+    unsigned k = 0;
+    while (k < m->count && m->index[k] != index)
+        k++;
+    if (k == m->count) {
+        m->index[k] = index;
+        memset(m->a0[k], 0, sizeof m->a0[k]);
+        memset(m->a1[k], 0, sizeof m->a1[k]);
+        m->count++;
+    }
+    for (int c = 0; c < 3; c++)
+        (end ? m->a1 : m->a0)[k][c] += weight * coef[c];
+}
+
+/* Adds the samples between ends e0 and e1 of source s into its band's bus
+ * `near` and, split by the voice's next_share, the next band's `far` (NULL
+ * when unshared). */
+static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg_aero_end *e0,
+                 const fg_aero_end *e1, uint32_t frames, float *near, float *far)
+{
+    const double w_far = far ? v->next_share : 0.0, w_near = 1.0 - w_far;
+    direction_mix m = {.count = 0};
+    for (int j = 0; j < 2; j++) {
+        mix_add(&m, e0->lookup.index[j], e0->lookup.weight[j], e0->coef, 0);
+        mix_add(&m, e1->lookup.index[j], e1->lookup.weight[j], e1->coef, 1);
+    }
+    const fg_aero_texture_desc *t = v->tex;
+    const uint32_t comps = t->components;
+    const double inv = 1.0 / frames;
+    /* tau runs monotonically from e0 to e1: inside the steady part at both
+     * ends, it is inside between */
+    const bool steady = envelope(v, e0->tau_s) == 1.0 && envelope(v, e1->tau_s) == 1.0;
+    for (unsigned k = 0; k < m.count; k++) {
+        const fg_aero_direction *dir = &t->direction[m.index[k]];
+        const uint32_t f = dir->frames;
+        const float *g = dir->samples + (size_t)s->texture_source * f * comps;
+        double base = floor(e0->position / f) * f;
+        for (uint32_t n = 0; n < frames; n++) {
+            double u = n * inv;
+            double tau = e0->tau_s + (e1->tau_s - e0->tau_s) * u;
+            double env = steady ? 1.0 : envelope(v, tau);
+            if (env <= 0.0)
+                continue;
+            double x = e0->position + (e1->position - e0->position) * u - base;
+            if (x >= f)
+                x = fmod(x, f);
+            uint32_t i = (uint32_t)x;
+            if (i >= f)
+                i = f - 1;
+            double frac = x - i;
+            uint32_t i1 = i + 1 == f ? 0 : i + 1;
+            double p = 0.0;
+            for (uint32_t c = 0; c < comps; c++) {
+                double a = m.a0[k][c] + (m.a1[k][c] - m.a0[k][c]) * u;
+                double sample = (1.0 - frac) * g[(size_t)i * comps + c] + frac * g[(size_t)i1 * comps + c];
+                p += a * sample;
+            }
+            if (far)
+                far[n] += (float)(w_far * env * p);
+            near[n] += (float)(w_near * env * p);
+        }
+    }
+}
+
+static bool end_finite(const fg_aero_end *e)
+{
+    return isfinite(e->tau_s) && isfinite(e->position) && isfinite(e->coef[0]) &&
+           isfinite(e->coef[1]) && isfinite(e->coef[2]);
+}
+
+static bool render(void *voice, bool stopping, const fg_block_context *block)
+{
+    fg_aero_voice *v = voice;
+    const double fs = block->cfg->sample_rate_hz, c = block->cfg->speed_of_sound_m_s;
+    const double t0 = block->start_frame / fs, t1 = (block->start_frame + block->frames) / fs;
+    fg_pose_queue_drain(&v->queue, &v->poses_seen, absorb, &v->path);
+    fg_trajectory_forget(&v->path, t0);
+    if (stopping && !(v->end_s < INFINITY))
+        v->end_s = fmax(t0, v->emit_s);
+    fg_head head;
+    fg_trajectory_head(block->trajectory, t1, &head);
+    fg_ears ears;
+    fg_head_ears(&head, block->ears->count, block->cfg->ear_spacing_m, &ears);
+
+    const fg_aero_texture_desc *t = v->tex;
+    const uint64_t units = 1 + block->frames / WORK_SAMPLES;
+    bool beyond = false, done = true;
+    double fastest = 0.0;
+    for (uint32_t i = 0; i < v->source_count; i++) {
+        fg_aero_source_state *s = &v->source[i];
+        for (unsigned ch = 0; ch < ears.count; ch++) {
+            fg_aero_end e1;
+            double rate;
+            double speed = evaluate(v, s, fg_v3_load(ears.pos[ch]), t1,
+                                    s->end[ch].tau_s + (t1 - t0), &s->end[ch], s->rate[ch], c,
+                                    &e1, &rate);
+            if (!end_finite(&e1)) {
+                fg_count(&block->counters->non_finite_voices, 1);
+                return true;
+            }
+            bool sounding = envelope(v, e1.tau_s) > 0.0 || envelope(v, s->end[ch].tau_s) > 0.0;
+            if (sounding) {
+                if (speed * t->reference_m / t->viscosity_m2_s > FG_AERO_RE_MAX)
+                    beyond = true;
+                fastest = fmax(fastest, speed);
+                if (*block->work_left >= units) {
+                    *block->work_left -= units;
+                    play(v, s, &s->end[ch], &e1, block->frames,
+                         fg_bus_pre(block->buses, v->bus, ch),
+                         v->next_share > 0.0 ? fg_bus_pre(block->buses, v->bus + 1, ch) : NULL);
+                } else {
+                    fg_count(&block->counters->skipped_work, units);
+                }
+            }
+            if (!(e1.tau_s >= v->end_s + FG_AERO_FADE_S))
+                done = false;
+            s->end[ch] = e1;
+            s->rate[ch] = rate;
+        }
+    }
+    fg_count(&v->blocks, 1);
+    if (beyond)
+        fg_count(&v->beyond_range_blocks, 1);
+    uint64_t um = (uint64_t)(fmin(fastest, 1e9) * 1e6);
+    if (um > atomic_load_explicit(&v->max_speed_um_s, memory_order_relaxed))
+        atomic_store_explicit(&v->max_speed_um_s, um, memory_order_relaxed);
+    return done;
+}
+
+const fg_source_ops fg_aero_ops = {
+    .name = "aero object",
+    .kind = &fg_aero_kind,
+    .prepare = fg_aero_prepare,
+    .adopt = adopt,
+    .render = render,
+};

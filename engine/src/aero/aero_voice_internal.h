@@ -1,0 +1,83 @@
+/* The aero object as a source model (core/source_internal.h): its kind,
+ * its voice state and its model.
+ *
+ * The frame thread publishes the object's poses into the voice's own pose
+ * queue, as fg_listener records (forward: the normal, up: axis x normal,
+ * so the trajectory's right is the axis); the audio thread absorbs them
+ * into the voice's own fg_trajectory, the listener's interpolation. Each
+ * block, for every source and ear, the emission time of the block's last
+ * sample is solved from the two trajectories, the texture position
+ * advanced to it, and the samples between read with the emission time,
+ * texture position and the dipole's projections on the ear interpolated
+ * from the block's start (aero_voice.c). */
+#ifndef FULGUR_AERO_VOICE_INTERNAL_H
+#define FULGUR_AERO_VOICE_INTERNAL_H
+
+#include <stdatomic.h>
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "core/listener_internal.h"
+#include "core/source_internal.h"
+#include "core/trajectory_internal.h"
+#include "fulgur/aero.h"
+#include "fulgur/aero_object.h"
+
+/* Where one source stands for one ear at one emission time: the block's
+ * end, which is the next block's start. */
+typedef struct fg_aero_end {
+    double tau_s;      /* emission time heard at the ear */
+    double position;   /* texture position, in texture frames */
+    fg_aero_lookup lookup;
+    double coef[3];    /* per texture component: the pressure at the ear per
+                          unit sample (scale, span, gain, projection, 1/(4 pi c r^2)) */
+} fg_aero_end;
+
+typedef struct fg_aero_source_state {
+    double along_m;    /* from the origin along the axis */
+    double span_m;     /* 2-D: the span it stands for; 3-D: 1 */
+    uint32_t texture_source;
+    fg_aero_end end[2]; /* per ear */
+    double rate[2];     /* texture frames per second of emission time there */
+} fg_aero_source_state;
+
+typedef struct fg_aero_voice {
+    fg_pose_queue queue;       /* the frame thread's poses */
+    fg_trajectory path;        /* audio thread: the poses absorbed */
+    uint64_t poses_seen;
+    const fg_aero_texture *texture;
+    const fg_aero_texture_desc *tex;
+    fg_aero_body body;
+    fg_aero_wind wind;
+    double gain;
+    unsigned bus;              /* its distance band (or the dry bus) */
+    double next_share;         /* the share of the next band (ISO 9613-1's split) */
+    double emit_s;             /* engine clock of the emission's start */
+    double end_s;              /* of its end (the start of the fade out); INFINITY until known */
+    double duration_s;
+    bool adopted_once;
+    uint32_t source_count;
+    fg_aero_source_state source[FG_AERO_OBJECT_MAX_SOURCES];
+    /* read by other threads */
+    atomic_uint_least64_t blocks, beyond_range_blocks, max_speed_um_s;
+} fg_aero_voice;
+
+/* The aero object kind and its one model. */
+extern const fg_source_kind fg_aero_kind;
+extern const fg_source_ops fg_aero_ops;
+
+/* The model's prepare (aero_object.c). [sim-thread] */
+fg_result fg_aero_prepare(const fg_source_ops *ops, void *voice, const void *desc,
+                          const fg_post_context *post);
+
+/* The fg_listener record the trajectory keeps for pose (checked). */
+void fg_aero_pose_record(const fg_aero_pose *pose, fg_listener *out);
+
+/* The wind at time t_s: its velocity times (1 + gust n(t)). */
+void fg_aero_wind_at(const fg_aero_wind *w, double t_s, double out[3]);
+
+/* The sources a stick of length_m splits into with texture reference d_m
+ * (the correlation length 3 d_m), at least 1. */
+uint32_t fg_aero_default_sources(double length_m, double d_m);
+
+#endif

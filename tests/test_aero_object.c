@@ -1,0 +1,523 @@
+/* Aero objects in the engine (fulgur/aero_object.h), against closed forms
+ * on textures made by hand (a drag or lift that is one pure tone, so
+ * every number below has an exact value): the pitch law f_out / f_tex =
+ * v / v0; the level law, +18.06 dB per doubling of speed for an aeolian
+ * tone, +12.04 dB for a cavity tone (the corrected eq. 3); an inclined
+ * stick at 30 degrees (x 0.8660, -3.75 dB); Doppler at 34.3 m/s
+ * (x 1 / 0.9 approaching, x 1 / 1.1 receding, from the solved emission
+ * times alone); the arrival r / c; the dipole's cos theta and 1 / r; the
+ * number of sources (Dobashi et al.'s 50 cm rod of 1 cm: 16; their 70 cm
+ * sword: 10); the real-time guard and a frame thread publishing poses;
+ * the refusals and the Reynolds range (silent below, counted above). */
+#include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdbool.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "fg_math.h"
+#include "fulgur/aero.h"
+#include "fulgur/aero_object.h"
+#include "fulgur/engine.h"
+#include "rt_guard.h"
+
+#define FS 48000.0
+#define C 343.0
+#define V0 10.0
+#define TEX_RATE 16000.0
+#define TEX_FRAMES 1600
+#define TEX_PERIODS 20 /* f_tex = 200 Hz at v0 */
+#define F_TEX (TEX_PERIODS * TEX_RATE / TEX_FRAMES)
+#define DEG (FG_PI / 180.0)
+
+enum { DRAG_ONLY, LIFT_ONLY };
+
+static float samples[TEX_FRAMES * 2];
+
+/* A circular rod's texture, D = 1 cm, whose drag or lift is cos(2 pi f t). */
+static fg_aero_texture *make_texture(int which, fg_aero_tone tone, double reference_m)
+{
+    for (int i = 0; i < TEX_FRAMES; i++) {
+        float g = (float)cos(2.0 * FG_PI * TEX_PERIODS * i / TEX_FRAMES);
+        samples[2 * i] = which == DRAG_ONLY ? g : 0.0f;
+        samples[2 * i + 1] = which == LIFT_ONLY ? g : 0.0f;
+    }
+    static const fg_aero_source one = {0.0, 1.0};
+    fg_aero_direction dir = {.frontal_m = reference_m, .frequency_hz = F_TEX,
+                             .strouhal = F_TEX * reference_m / V0, .lift_amplitude = 0.3,
+                             .drag_mean = 1.2, .transient_s = 0.1, .periods = TEX_PERIODS,
+                             .frames = TEX_FRAMES, .samples = samples};
+    fg_aero_texture_desc d = {.shape = FG_AERO_CIRCLE, .tone = tone, .dims = 2, .components = 2,
+                              .length_m = reference_m, .reference_m = reference_m,
+                              .speed_m_s = V0, .viscosity_m2_s = 1.5e-5, .density_kg_m3 = 1.204,
+                              .sample_rate_hz = TEX_RATE, .cells_per_length = 32, .sources = 1,
+                              .source = &one, .directions = 1, .direction = &dir};
+    d.reynolds = d.reference_m * d.speed_m_s / d.viscosity_m2_s;
+    fg_aero_texture *t;
+    assert_int_equal(fg_aero_texture_create(&d, &t), FG_OK);
+    return t;
+}
+
+static fg_engine *make_engine(uint32_t channels)
+{
+    fg_engine_config cfg = {.sample_rate_hz = FS, .speed_of_sound_m_s = C,
+                            .max_block_frames = 256, .channels = channels};
+    fg_engine *e;
+    assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
+    return e;
+}
+
+/* A rod along z through `at`, its cross-section's x along x, 1 cm long
+ * (one source) unless told. */
+static fg_aero_object rod(const fg_aero_texture *t, const double at[3], double wind_x)
+{
+    return (fg_aero_object){.texture = t, .body = FG_AERO_STICK, .start_m = -0.005,
+                            .end_m = 0.005,
+                            .pose = {.position = {at[0], at[1], at[2]}, .axis = {0, 0, 1},
+                                     .normal = {1, 0, 0}},
+                            .wind = {.velocity = {wind_x, 0, 0}}};
+}
+
+/* Renders seconds of e into plane 0 (allocated; the caller frees it). */
+static float *render(fg_engine *e, double seconds, size_t *frames)
+{
+    size_t n = (size_t)(seconds * FS) / 256 * 256;
+    float *left = calloc(n, sizeof *left), *right = calloc(n, sizeof *right);
+    for (size_t at = 0; at < n; at += 256) {
+        float *planes[2] = {left + at, right + at};
+        assert_int_equal(fg_engine_render(e, planes, 256), FG_OK);
+    }
+    free(right);
+    *frames = n;
+    return left;
+}
+
+/* The frequency of a steady tone between seconds a and b, from its
+ * upward zero crossings (each placed by linear interpolation). */
+static double frequency(const float *x, double a, double b)
+{
+    size_t lo = (size_t)(a * FS), hi = (size_t)(b * FS);
+    double first = -1, last = -1;
+    long count = 0;
+    for (size_t n = lo; n + 1 < hi; n++)
+        if (x[n] < 0.0f && x[n + 1] >= 0.0f) {
+            double t = n + x[n] / (double)(x[n] - x[n + 1]);
+            if (first < 0)
+                first = t;
+            last = t;
+            count++;
+        }
+    assert_true(count > 10);
+    return (count - 1) / ((last - first) / FS);
+}
+
+static double rms(const float *x, double a, double b)
+{
+    size_t lo = (size_t)(a * FS), hi = (size_t)(b * FS);
+    double s = 0;
+    for (size_t n = lo; n < hi; n++)
+        s += (double)x[n] * x[n];
+    return sqrt(s / (hi - lo));
+}
+
+typedef struct tone {
+    double f, rms;
+} tone;
+
+/* Posts o alone on a fresh engine and measures its tone at the left ear. */
+static tone hear(const fg_aero_object *o, uint32_t channels)
+{
+    fg_engine *e = make_engine(channels);
+    assert_int_equal(fg_aero_object_post(e, o, NULL), FG_OK);
+    size_t n;
+    float *x = render(e, 1.2, &n);
+    tone out = {frequency(x, 0.2, 1.2), rms(x, 0.2, 1.2)};
+    free(x);
+    fg_engine_destroy(e);
+    return out;
+}
+
+static void pitch_follows_speed(void **state)
+{
+    (void)state;
+    fg_aero_texture *t = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    static const double at[3] = {0, 10, 0};
+    const double ratios[] = {0.5, 1.0, 2.0, 4.0};
+    for (size_t i = 0; i < 4; i++) {
+        fg_aero_object o = rod(t, at, ratios[i] * V0);
+        o.start_m = -0.25, o.end_m = 0.25; /* 16 sources */
+        tone h = hear(&o, 2);
+        double got = h.f / F_TEX;
+        print_message("v/v0 %.1f: f_out/f_tex %.6f\n", ratios[i], got);
+        if (fabs(got / ratios[i] - 1.0) > 1e-3)
+            fail_msg("v/v0 %.1f: f_out/f_tex %.6f", ratios[i], got);
+    }
+    fg_aero_texture_destroy(t);
+}
+
+static void level_law(void **state)
+{
+    (void)state;
+    static const double at[3] = {0, 10, 0};
+    const fg_aero_tone tones[] = {FG_AERO_AEOLIAN, FG_AERO_CAVITY};
+    const double want[] = {18.06, 12.04};
+    for (int k = 0; k < 2; k++) {
+        fg_aero_texture *t = make_texture(LIFT_ONLY, tones[k], 0.01);
+        for (double v = 0.5 * V0; v <= 2.0 * V0; v *= 2.0) {
+            fg_aero_object slow = rod(t, at, v), fast = rod(t, at, 2.0 * v);
+            double db = 20.0 * log10(hear(&fast, 1).rms / hear(&slow, 1).rms);
+            print_message("%s, %g -> %g m/s: %+.3f dB\n", k ? "cavity" : "aeolian", v, 2 * v, db);
+            if (fabs(db - want[k]) > 0.1)
+                fail_msg("%s: %+.3f dB per doubling, want %+.2f", k ? "cavity" : "aeolian", db,
+                         want[k]);
+        }
+        fg_aero_texture_destroy(t);
+    }
+}
+
+/* Tilted 30 degrees out of the plane across the wind: the cross-flow is
+ * v cos 30, the lift still along y, toward the listener. */
+static void inclined_stick(void **state)
+{
+    (void)state;
+    fg_aero_texture *t = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    static const double at[3] = {0, 10, 0};
+    fg_aero_object upright = rod(t, at, V0), tilted = upright;
+    tilted.pose.axis[0] = sin(30 * DEG), tilted.pose.axis[2] = cos(30 * DEG);
+    tilted.pose.normal[0] = cos(30 * DEG), tilted.pose.normal[2] = -sin(30 * DEG);
+    tone a = hear(&upright, 1), b = hear(&tilted, 1);
+    double ratio = b.f / a.f, db = 20.0 * log10(b.rms / a.rms);
+    print_message("30 degrees: frequency x%.5f, level %+.3f dB\n", ratio, db);
+    if (fabs(ratio - 0.8660) > 0.8660e-3 || fabs(db + 3.75) > 0.05)
+        fail_msg("30 degrees: x%.5f (want 0.8660), %+.3f dB (want -3.75)", ratio, db);
+    fg_aero_texture_destroy(t);
+}
+
+/* A rod flying at 34.3 m/s along y, through still air, toward the
+ * listener or away; the drag radiates along the path. The texture plays
+ * at 3.43 x its rate; Doppler multiplies that by 1 / (1 -+ 0.1). */
+static void doppler(void **state)
+{
+    (void)state;
+    fg_aero_texture *t = make_texture(DRAG_ONLY, FG_AERO_AEOLIAN, 0.01);
+    const double speed = 34.3, start[2] = {100.0, 10.0}, dir[2] = {-1.0, 1.0};
+    const double want[2] = {1.0 / 0.9, 1.0 / 1.1};
+    for (int k = 0; k < 2; k++) {
+        fg_engine *e = make_engine(1);
+        static const double at[3] = {0, 0, 0};
+        fg_aero_object o = rod(t, at, 0.0);
+        o.pose.position[1] = start[k];
+        o.pose.velocity[1] = dir[k] * speed;
+        fg_voice_id id;
+        assert_int_equal(fg_aero_object_post(e, &o, &id), FG_OK);
+        fg_aero_pose later = o.pose;
+        later.time_s = 2.5;
+        later.position[1] = start[k] + dir[k] * speed * 2.5;
+        assert_int_equal(fg_aero_object_set_pose(e, id, &later), FG_OK);
+        size_t n;
+        float *x = render(e, 1.6, &n);
+        double got = frequency(x, 0.5, 1.5) / (F_TEX * speed / V0);
+        print_message("%s: Doppler x%.5f (want x%.5f)\n", k ? "receding" : "approaching", got,
+                      want[k]);
+        if (fabs(got / want[k] - 1.0) > 2e-3)
+            fail_msg("%s: x%.5f, want x%.5f", k ? "receding" : "approaching", got, want[k]);
+        free(x);
+        fg_engine_destroy(e);
+    }
+    fg_aero_texture_destroy(t);
+}
+
+/* A still rod 34.3 m away in the wind, emitting from 0.05 s: the first
+ * sample heard is at (0.05 + r / c) fs, within one sample. */
+static void arrival(void **state)
+{
+    (void)state;
+    fg_aero_texture *t = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    static const double at[3] = {0, 34.3, 0};
+    fg_engine *e = make_engine(1);
+    fg_aero_object o = rod(t, at, V0);
+    o.emit_time_s = 0.05;
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_OK);
+    size_t n;
+    float *x = render(e, 0.3, &n);
+    long first = -1;
+    for (size_t i = 0; i < n && first < 0; i++)
+        if (x[i] != 0.0f)
+            first = (long)i;
+    double want = (0.05 + 34.3 / C) * FS;
+    print_message("first sample %ld, r/c at %.2f\n", first, want);
+    if (first < 0 || fabs(first - want) > 1.0)
+        fail_msg("first sample %ld, want %.2f +- 1", first, want);
+    free(x);
+    fg_engine_destroy(e);
+}
+
+/* The lift dipole seen at theta from its axis, r away: cos theta / r. */
+static double dipole_rms(const fg_aero_texture *t, double r, double theta)
+{
+    double at[3] = {-r * sin(theta), -r * cos(theta), 0};
+    fg_aero_object o = rod(t, at, V0);
+    return hear(&o, 1).rms;
+}
+
+static void directivity_and_distance(void **state)
+{
+    (void)state;
+    fg_aero_texture *t = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    double on = dipole_rms(t, 10.0, 0.0), at60 = dipole_rms(t, 10.0, 60 * DEG);
+    double far = dipole_rms(t, 20.0, 0.0);
+    double ratio = at60 / on, db = 20.0 * log10(far / on);
+    print_message("60 degrees: %.5f of on-axis; 10 -> 20 m: %+.3f dB\n", ratio, db);
+    if (fabs(ratio - 0.5) > 0.005)
+        fail_msg("60 degrees: %.5f, want 0.500 +- 1 %%", ratio);
+    if (fabs(db + 6.02) > 0.05)
+        fail_msg("doubling the distance: %+.3f dB, want -6.02 +- 0.05", db);
+    fg_aero_texture_destroy(t);
+}
+
+static void source_count(void **state)
+{
+    (void)state;
+    fg_aero_texture *rod1 = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    fg_aero_texture *blade = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.0225);
+    fg_engine *e = make_engine(2);
+    static const double at[3] = {0, 5, 0};
+    fg_aero_object a = rod(rod1, at, V0), b = rod(blade, at, V0);
+    a.start_m = 0.0, a.end_m = 0.5;
+    b.start_m = 0.1, b.end_m = 0.8; /* a 70 cm blade past a 10 cm hilt */
+    fg_voice_id ia, ib;
+    assert_int_equal(fg_aero_object_post(e, &a, &ia), FG_OK);
+    assert_int_equal(fg_aero_object_post(e, &b, &ib), FG_OK);
+    fg_aero_report ra, rb;
+    assert_int_equal(fg_aero_object_get_report(e, ia, &ra), FG_OK);
+    assert_int_equal(fg_aero_object_get_report(e, ib, &rb), FG_OK);
+    assert_int_equal(ra.sources, 16);
+    assert_int_equal(rb.sources, 10);
+    fg_engine_destroy(e);
+    fg_aero_texture_destroy(rod1);
+    fg_aero_texture_destroy(blade);
+}
+
+/* A 16-source rod swung about its end, a pose per 90 Hz frame published
+ * between blocks: rendering allocates, locks, sleeps and does I/O zero
+ * times, and the output is finite and not silent. Then a stop fades it
+ * out and the voice comes back through collect. */
+static void real_time_guard_and_stop(void **state)
+{
+    (void)state;
+    fg_aero_texture *t = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    fg_engine *e = make_engine(2);
+    static const double at[3] = {0, 3, 0};
+    fg_aero_object o = rod(t, at, 0.0);
+    o.start_m = 0.0, o.end_m = 0.5;
+    fg_voice_id id;
+    assert_int_equal(fg_aero_object_post(e, &o, &id), FG_OK);
+    float l[256], r[256];
+    float *planes[2] = {l, r};
+    double peak = 0;
+    const double w = 20.0; /* rad/s about y */
+    for (int b = 0; b < 400; b++) {
+        double now = b * 256 / FS;
+        if (b % 2 == 0) {
+            double a = w * (now + 0.011);
+            fg_aero_pose p = {.position = {0, 3, 0}, .axis = {sin(a), 0, cos(a)},
+                              .normal = {cos(a), 0, -sin(a)}, .time_s = now + 0.011};
+            assert_int_equal(fg_aero_object_set_pose(e, id, &p), FG_OK);
+        }
+        rt_guard_arm();
+        fg_result res = fg_engine_render(e, planes, 256);
+        rt_guard_counts counts = rt_guard_disarm();
+        assert_int_equal(res, FG_OK);
+        assert_int_equal(rt_guard_total(&counts), 0);
+        for (int n = 0; n < 256; n++) {
+            assert_true(isfinite(l[n]) && isfinite(r[n]));
+            peak = fmax(peak, fabs(l[n]));
+        }
+    }
+    fg_aero_report rep;
+    assert_int_equal(fg_aero_object_get_report(e, id, &rep), FG_OK);
+    /* g of 1 N/s per metre: 16 sources of 3.1 cm, 3 m away, up to
+     * 16 * 0.031 / (4 pi c 3 m) = 3.9e-5 Pa */
+    assert_true(peak > 5e-6 && peak < 4e-5);
+    print_message("swing at 20 rad/s: peak %.4g Pa, fastest cross-flow %.3f m/s\n", peak,
+                  rep.max_speed_m_s);
+    /* the outermost source, 31/64 of 0.5 m out: 9.6875 m/s, less the
+     * chord's 1 - a^2/24 (a = 0.21 rad between poses: 0.2 %) */
+    if (fabs(rep.max_speed_m_s - 9.6875 * (1.0 - 0.2133 * 0.2133 / 24.0)) > 0.02)
+        fail_msg("fastest cross-flow %.4f m/s", rep.max_speed_m_s);
+    assert_int_equal(fg_engine_stop(e, id), FG_OK);
+    for (int b = 0; b < 20; b++)
+        assert_int_equal(fg_engine_render(e, planes, 256), FG_OK);
+    assert_int_equal(fg_engine_collect(e), 1);
+    assert_int_equal(fg_aero_object_set_pose(e, id, &o.pose), FG_ERR_NOT_FOUND);
+    fg_engine_destroy(e);
+    fg_aero_texture_destroy(t);
+}
+
+typedef struct publisher {
+    fg_engine *e;
+    fg_voice_id id;
+    atomic_bool done;
+} publisher;
+
+static void *publish_main(void *arg)
+{
+    publisher *p = arg;
+    for (int k = 0; !atomic_load(&p->done); k++) {
+        double a = 0.01 * k;
+        fg_aero_pose pose = {.position = {0, 3, 0}, .axis = {sin(a), 0, cos(a)},
+                             .normal = {cos(a), 0, -sin(a)}};
+        if (fg_aero_object_set_pose(p->e, p->id, &pose) != FG_OK)
+            return NULL;
+        fg_aero_report rep;
+        if (fg_aero_object_get_report(p->e, p->id, &rep) != FG_OK)
+            return NULL;
+    }
+    return NULL;
+}
+
+/* A frame thread publishing poses as fast as it can while this thread
+ * renders (ThreadSanitizer watches this in build-tsan/). */
+static void frame_thread_publishes(void **state)
+{
+    (void)state;
+    fg_aero_texture *t = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    fg_engine *e = make_engine(2);
+    static const double at[3] = {0, 3, 0};
+    fg_aero_object o = rod(t, at, V0);
+    o.start_m = 0.0, o.end_m = 0.5;
+    publisher p = {.e = e};
+    assert_int_equal(fg_aero_object_post(e, &o, &p.id), FG_OK);
+    pthread_t th;
+    assert_int_equal(pthread_create(&th, NULL, publish_main, &p), 0);
+    float l[256], r[256];
+    float *planes[2] = {l, r};
+    for (int b = 0; b < 300; b++) {
+        assert_int_equal(fg_engine_render(e, planes, 256), FG_OK);
+        for (int n = 0; n < 256; n++)
+            assert_true(isfinite(l[n]) && isfinite(r[n]));
+    }
+    atomic_store(&p.done, true);
+    assert_int_equal(pthread_join(th, NULL), 0);
+    fg_engine_destroy(e);
+    fg_aero_texture_destroy(t);
+}
+
+static void refuses_bad_input(void **state)
+{
+    (void)state;
+    fg_aero_texture *t = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    fg_engine *e = make_engine(2);
+    static const double at[3] = {0, 3, 0};
+    fg_aero_object good = rod(t, at, V0), o;
+    assert_int_equal(fg_aero_object_post(NULL, &good, NULL), FG_ERR_NULL);
+    o = good, o.texture = NULL;
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_NULL);
+    o = good, o.end_m = o.start_m; /* zero length */
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_ARGUMENT);
+    o = good, o.body = FG_AERO_COMPACT; /* a 2-D texture for a compact body */
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_ARGUMENT);
+    o = good, o.pose.position[0] = NAN;
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_NOT_FINITE);
+    o = good, o.pose.normal[0] = 0, o.pose.normal[2] = 1; /* along the axis */
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_ARGUMENT);
+    o = good, o.pose.velocity[0] = 150.0;
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_ARGUMENT);
+    o = good, o.wind.gust = 2.0;
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_ARGUMENT);
+    o = good, o.start_m = 0.0, o.end_m = 10.0; /* 333 correlation lengths */
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_ARGUMENT);
+    o.sources = 64;
+    fg_voice_id long_rod;
+    assert_int_equal(fg_aero_object_post(e, &o, &long_rod), FG_OK);
+    o = good, o.absorption = FG_ABSORPTION_ABE_FIR;
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_ARGUMENT);
+    o = good, o.emit_time_s = -2.0;
+    assert_int_equal(fg_aero_object_post(e, &o, NULL), FG_ERR_ARGUMENT);
+    fg_engine_report rep;
+    fg_engine_get_report(e, &rep);
+    assert_int_equal(rep.posted, 1);
+
+    /* poses refused, nothing published */
+    fg_voice_id ok;
+    assert_int_equal(fg_aero_object_post(e, &good, &ok), FG_OK);
+    fg_aero_pose p = good.pose;
+    p.axis[1] = INFINITY;
+    assert_int_equal(fg_aero_object_set_pose(e, ok, &p), FG_ERR_NOT_FINITE);
+    p = good.pose, p.time_s = -1.0;
+    assert_int_equal(fg_aero_object_set_pose(e, ok, &p), FG_ERR_ARGUMENT);
+    p = good.pose, p.velocity[2] = 101.0;
+    assert_int_equal(fg_aero_object_set_pose(e, ok, &p), FG_ERR_ARGUMENT);
+    assert_int_equal(fg_aero_object_set_pose(e, 12345, &good.pose), FG_ERR_NOT_FOUND);
+    fg_engine_destroy(e);
+    fg_aero_texture_destroy(t);
+}
+
+/* Below the onset of shedding (Re 47) a rod is silent; above the drag
+ * crisis (Re 2e5) it plays on and the blocks are counted. */
+static void reynolds_range(void **state)
+{
+    (void)state;
+    fg_aero_texture *thin = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    fg_aero_texture *thick = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.05);
+    static const double at[3] = {0, 3, 0};
+    fg_aero_object breeze = rod(thin, at, 0.03); /* Re 20 */
+    fg_engine *e = make_engine(1);
+    fg_voice_id id;
+    assert_int_equal(fg_aero_object_post(e, &breeze, &id), FG_OK);
+    size_t n;
+    float *x = render(e, 0.2, &n);
+    for (size_t i = 0; i < n; i++)
+        assert_true(x[i] == 0.0f);
+    free(x);
+    fg_aero_report r;
+    assert_int_equal(fg_aero_object_get_report(e, id, &r), FG_OK);
+    assert_int_equal(r.beyond_range_blocks, 0);
+    fg_engine_destroy(e);
+
+    fg_aero_object gale = rod(thick, at, 80.0), ok = rod(thick, at, 20.0); /* Re 2.7e5, 6.7e4 */
+    e = make_engine(1);
+    fg_voice_id fast, fine;
+    assert_int_equal(fg_aero_object_post(e, &gale, &fast), FG_OK);
+    assert_int_equal(fg_aero_object_post(e, &ok, &fine), FG_OK);
+    x = render(e, 0.2, &n);
+    double peak = 0;
+    for (size_t i = 0; i < n; i++)
+        peak = fmax(peak, fabs(x[i]));
+    free(x);
+    assert_true(peak > 0.0);
+    fg_aero_report rf, rk;
+    assert_int_equal(fg_aero_object_get_report(e, fast, &rf), FG_OK);
+    assert_int_equal(fg_aero_object_get_report(e, fine, &rk), FG_OK);
+    assert_true(rf.beyond_range_blocks > 0);
+    assert_int_equal(rk.beyond_range_blocks, 0);
+    assert_true(fabs(rf.max_speed_m_s - 80.0) < 1e-3);
+    fg_engine_destroy(e);
+    fg_aero_texture_destroy(thin);
+    fg_aero_texture_destroy(thick);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(pitch_follows_speed),
+        cmocka_unit_test(level_law),
+        cmocka_unit_test(inclined_stick),
+        cmocka_unit_test(doppler),
+        cmocka_unit_test(arrival),
+        cmocka_unit_test(directivity_and_distance),
+        cmocka_unit_test(source_count),
+        cmocka_unit_test(real_time_guard_and_stop),
+        cmocka_unit_test(frame_thread_publishes),
+        cmocka_unit_test(refuses_bad_input),
+        cmocka_unit_test(reynolds_range),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
