@@ -19,7 +19,7 @@ typedef struct render_job {
     fg_engine *engine;
     size_t *order;          /* the discharge indices by emit time, then index */
     size_t next;            /* the next of order to post */
-    float *planes[2];
+    float *planes[SCENE_MAX_CHANNELS];
     size_t segments;
     double pose_period_s;   /* between published poses */
     uint64_t next_pose;     /* the next pose to publish, in periods from 0 */
@@ -47,9 +47,10 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
         return r;
     }
     job->order = scene_post_order(s);
+    bool planes = true;
     for (uint32_t ch = 0; ch < s->channels; ch++)
-        job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float));
-    if (!job->order || !job->planes[0] || (s->channels == 2 && !job->planes[1])) {
+        planes = (job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float))) && planes;
+    if (!job->order || !planes) {
         snprintf(err, err_size, "out of memory");
         return FG_ERR_NO_MEMORY;
     }
@@ -146,7 +147,7 @@ fg_result scene_render(const scene *s, const scene_render_sink *sink,
         fg_engine_get_report(job.engine, &report->engine);
     fg_engine_destroy(job.engine);
     free(job.order);
-    free(job.planes[0]);
-    free(job.planes[1]);
+    for (uint32_t ch = 0; ch < SCENE_MAX_CHANNELS; ch++)
+        free(job.planes[ch]);
     return rc;
 }

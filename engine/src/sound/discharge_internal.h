@@ -42,7 +42,9 @@ typedef struct fg_event_ear {
         fg_wm_shape wm;   /* the WM-wave (wm_model.c) */
         fg_abe_wave abe;  /* Abe's wave, arrival relative to the emission (abe_model.c) */
     };
-    float shadow;         /* head shadow: the share sent to the shadowed twin */
+    float shadow;         /* head shadow: the weight alpha - 1 sent to the shadowed twin */
+    float dir[3];         /* where the wave comes from, unit, in the head's frame (x
+                           * ahead, y left, z up): the layout's encoding */
     uint8_t bus;          /* the filter bus (bus_internal.h) */
 } fg_event_ear;
 
@@ -74,10 +76,11 @@ typedef struct fg_ear_path {
 
 /* Where ear ch of an event is added in this block, for one instance. */
 typedef struct fg_event_play {
+    const fg_engine_config *cfg; /* the layout */
     fg_bus_set *buses;
     unsigned bus;         /* the plain bus; its shadowed twin is bus + FG_BUS_PLAIN */
-    unsigned ch;
-    double share[2];      /* of the plain bus and of the twin; a zero share is skipped */
+    unsigned ch;          /* the output channel */
+    double share[2];      /* weights on the plain bus and on the twin; a zero one is skipped */
     double origin_frame;  /* the instance's emission, samples after the block's start */
     double offset_s;      /* the instance's emission after the voice's */
     double fs_hz;
