@@ -23,12 +23,25 @@ bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_so
                                  const fg_propagation_config *prop, fg_voice_model model,
                                  const fg_listener *listener, unsigned block)
 {
+    return bench_render_tree_layout(nodes, count, params, prop, model, FG_LAYOUT_STEREO, 0,
+                                    listener, block);
+}
+
+bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
+                                   const fg_sound_config *params, const fg_propagation_config *prop,
+                                   fg_voice_model model, fg_layout layout, uint32_t order,
+                                   const fg_listener *listener, unsigned block)
+{
     fg_engine_config cfg = {.sample_rate_hz = 48000, .max_block_frames = block,
-                            .segment_capacity = (uint32_t)(2 * count), .max_voices = 1};
+                            .segment_capacity = (uint32_t)(2 * count), .max_voices = 1,
+                            .layout = layout, .ambisonic_order = order};
     fg_engine *e;
     check(fg_engine_create(&cfg, &e), "create");
     check(fg_engine_set_listener(e, listener), "listener");
-    float *planes[2] = {malloc(block * sizeof(float)), malloc(block * sizeof(float))};
+    fg_engine_get_config(e, &cfg);
+    float *planes[16];
+    for (uint32_t ch = 0; ch < cfg.channels; ch++)
+        planes[ch] = malloc(block * sizeof(float));
     fg_discharge d = {.nodes = nodes, .node_count = count, .sound = *params, .strokes = 1,
                       .emit_time_s = 0, .seed = 1, .propagation = *prop, .model = model};
     bench_run run = {0};
@@ -46,8 +59,8 @@ bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_so
     run.post_s = t1 - t0;
     run.render_s = t2 - t1;
     run.sound_s = (double)frames / 48000.0;
-    free(planes[0]);
-    free(planes[1]);
+    for (uint32_t ch = 0; ch < cfg.channels; ch++)
+        free(planes[ch]);
     fg_engine_destroy(e);
     return run;
 }

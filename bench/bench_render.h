@@ -23,4 +23,10 @@ bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_so
                                  const fg_propagation_config *prop, fg_voice_model model,
                                  const fg_listener *listener, unsigned block);
 
+/* The same in an output layout (fg_engine_config.layout, ambisonic_order). */
+bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
+                                   const fg_sound_config *params, const fg_propagation_config *prop,
+                                   fg_voice_model model, fg_layout layout, uint32_t order,
+                                   const fg_listener *listener, unsigned block);
+
 #endif

@@ -37,12 +37,9 @@ int main(void)
         {"Abe's voice model (512 sources)", {.refraction_radius_m = 0}, FG_MODEL_ABE},
     };
     fg_sound_config p;
-    if (fg_preset_sound(FG_PRESET_LIGHTNING, &p) != FG_OK)
+    fg_node *nodes = synth_far_bolt(SEGMENTS);
+    if (fg_preset_sound(FG_PRESET_LIGHTNING, &p) != FG_OK || !nodes)
         return 1;
-    fg_node *nodes = malloc((SEGMENTS + 1) * sizeof *nodes);
-    synth_tree(nodes, SEGMENTS, 5000.0, 3.0, 5);
-    for (size_t i = 0; i <= SEGMENTS; i++)
-        nodes[i].y += 3000.0;
     fg_listener head = {.position = {0, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
     char cpu[256];
     bench_machine(cpu, sizeof cpu);

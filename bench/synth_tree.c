@@ -1,5 +1,7 @@
 #include <math.h>
 
+#include <stdlib.h>
+
 #include "synth_tree.h"
 
 static uint64_t next(uint64_t *s)
@@ -51,4 +53,15 @@ void synth_tree(fg_node *nodes, size_t segments, double height_m, double step_m,
             p = i;
         }
     }
+}
+
+fg_node *synth_far_bolt(size_t segments)
+{
+    fg_node *nodes = malloc((segments + 1) * sizeof *nodes);
+    if (!nodes)
+        return NULL;
+    synth_tree(nodes, segments, 5000.0, 3.0, 5);
+    for (size_t i = 0; i <= segments; i++)
+        nodes[i].y += 3000.0;
+    return nodes;
 }

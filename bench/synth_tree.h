@@ -16,4 +16,9 @@
  * the origin, steps of step_m. */
 void synth_tree(fg_node *nodes, size_t segments, double height_m, double step_m, uint64_t seed);
 
+/* A 5 km bolt of that many segments in 3 m steps (seed 5) whose ground
+ * point lies 3 km ahead (+y) of the origin: segments + 1 nodes, malloc'd
+ * (the caller frees), NULL when out of memory. */
+fg_node *synth_far_bolt(size_t segments);
+
 #endif

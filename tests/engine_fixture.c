@@ -13,7 +13,9 @@ void fx_render(fg_engine *e, float *const *planes, uint32_t channels, size_t fra
 {
     for (size_t at = 0; at < frames; at += block) {
         uint32_t n = frames - at < block ? (uint32_t)(frames - at) : block;
-        float *p[2] = {planes[0] + at, channels > 1 ? planes[1] + at : NULL};
+        float *p[16] = {NULL};
+        for (uint32_t ch = 0; ch < channels && ch < 16; ch++)
+            p[ch] = planes[ch] + at;
         assert_int_equal(fg_engine_render(e, p, n), FG_OK);
     }
 }

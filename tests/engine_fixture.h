@@ -8,8 +8,8 @@
 
 #include "fulgur/fulgur.h"
 
-/* Renders frames frames into planes[ch][0..frames) in blocks of block
- * (the last one shorter), asserting FG_OK. */
+/* Renders frames frames into planes[ch][0..frames) (channels <= 16) in
+ * blocks of block (the last one shorter), asserting FG_OK. */
 void fx_render(fg_engine *e, float *const *planes, uint32_t channels, size_t frames,
                uint32_t block);
 

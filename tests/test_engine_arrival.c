@@ -15,6 +15,7 @@
 #include <math.h>
 
 #include "engine_fixture.h"
+#include "spatial/spherical_head_internal.h"
 
 #define C_M_S 343.0
 #define SPACING_M 0.18
@@ -37,7 +38,7 @@ typedef struct arrival_case {
 } arrival_case;
 
 /* The listener stays at the origin facing +y, up +z: the right ear is at
- * +x 0.09 m, the left at -x. */
+ * +x 0.09 m, the left at -x, on a sphere of that radius. */
 static const arrival_case cases[] = {
     {"ahead 3 m, broadside", 48000, 2, FG_PRESET_PLASMA_BALL, {0, 3, 0}, {0, 0, 1}, 0.01, 0.010, 0,
      256},
@@ -125,7 +126,12 @@ static void test_first_sample(void **state)
                             to[2] * (nodes[1].z - nodes[0].z)) /
                        len;
             double t_half, ps;
-            n_wave_at(&d.sound, r[k], &t_half, &ps);
+            n_wave_at(&d.sound, r[k], &t_half, &ps); /* at the straight distance */
+            /* the far ear's way around the spherical head
+             * (spatial/spherical_head_internal.h) */
+            double origin[3] = {0, 0, 0}, u[3] = {k == 0 ? -1.0 : 1.0, 0, 0};
+            if (ac->channels == 2)
+                r[k] += fg_head_excess_m(ac->mid, origin, u, 0.5 * SPACING_M, origin, origin, NULL);
             double start = ac->fs * (t_emit + r[k] / C_M_S - t_half - ac->half_len_m * s / C_M_S);
             long want = (long)floor(start + 0.5);
             onset[k] = fx_first_nonzero(planes[k], frames);

@@ -588,7 +588,8 @@ static bool same_config(const fg_engine_config *a, const fg_engine_config *b)
            a->max_adopt_per_block == b->max_adopt_per_block &&
            a->air_temperature_k == b->air_temperature_k &&
            a->air_humidity_pct == b->air_humidity_pct && a->air_pressure_kpa == b->air_pressure_kpa &&
-           a->work_per_frame == b->work_per_frame;
+           a->work_per_frame == b->work_per_frame && a->layout == b->layout &&
+           a->ambisonic_order == b->ambisonic_order;
 }
 
 static void test_create(void **state)
@@ -624,7 +625,7 @@ static void test_create(void **state)
     CHECK(same_config(&used, &dflt), "create(NULL) differs from the defaults");
     const fg_engine_config documented = {
         .sample_rate_hz = 48000, .max_block_frames = 4096, .channels = 2, .max_voices = 64,
-        .segment_capacity = 131072, .speed_of_sound_m_s = 343, .ear_spacing_m = 0.18,
+        .segment_capacity = 131072, .speed_of_sound_m_s = 343, .ear_spacing_m = 0.175,
         .max_lookahead_s = 0.25, .max_adopt_per_block = 8,
         .work_per_frame = FG_WORK_PER_FRAME_DEFAULT,
     };

@@ -14,12 +14,14 @@
 
 #include "fulgur/fulgur.h"
 #include "sound/wmwave_internal.h"
+#include "spatial/spherical_head_internal.h"
 #include "wm_reference.h"
 
 #define FS 48000.0
 #define C 343.0
 #define NODES 40
 #define FRAMES 9600
+#define HALF_SPACING 0.0875 /* the default head's radius */
 
 typedef struct scene {
     fg_node nodes[NODES];
@@ -67,9 +69,11 @@ static double to_strike(const scene *s, int k)
     return d;
 }
 
-/* Adds segment i's wave for an ear at e into out[0..n), with out[0] at
- * frame first. */
-static void add_segment(const scene *s, int i, const double e[3], double first, double *out, size_t n)
+/* Adds segment i's wave for an ear at e on the head centred at centre
+ * (the way around it: spatial/spherical_head_internal.h) into out[0..n),
+ * with out[0] at frame first. */
+static void add_segment(const scene *s, int i, const double e[3], const double centre[3],
+                        double first, double *out, size_t n)
 {
     const fg_node *a = &s->nodes[i], *b = &s->nodes[s->nodes[i].parent];
     double mid[3] = {(a->x + b->x) / 2, (a->y + b->y) / 2, (a->z + b->z) / 2};
@@ -81,20 +85,24 @@ static void add_segment(const scene *s, int i, const double e[3], double first, 
     w.b *= (len / 2) / s->sound.ref_half_len_m; /* the line integral */
     double emit = s->emit_s + 0.5 * (to_strike(s, i) + to_strike(s, s->nodes[i].parent)) /
                                   s->sound.return_stroke_speed_m_s;
-    fg_wm_event ev = {w, (emit + r / C) * FS - first, FS * (len / 2) / C};
+    double u[3], zero[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++)
+        u[k] = (e[k] - centre[k]) / HALF_SPACING;
+    double around = fg_head_excess_m(mid, centre, u, HALF_SPACING, zero, zero, NULL);
+    fg_wm_event ev = {w, (emit + (r + around) / C) * FS - first, FS * (len / 2) / C};
     ref_wm_add_direct(&ev, out, n);
 }
 
 static void ears_of(const fg_listener *p, double ears[2][3])
 {
-    /* right = forward x up, ears 0.18 m apart */
+    /* right = forward x up, ears 0.175 m apart */
     double r[3] = {p->forward[1] * p->up[2] - p->forward[2] * p->up[1],
                    p->forward[2] * p->up[0] - p->forward[0] * p->up[2],
                    p->forward[0] * p->up[1] - p->forward[1] * p->up[0]};
     double norm = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
     for (int k = 0; k < 3; k++) {
-        ears[0][k] = p->position[k] - 0.09 * r[k] / norm;
-        ears[1][k] = p->position[k] + 0.09 * r[k] / norm;
+        ears[0][k] = p->position[k] - HALF_SPACING * r[k] / norm;
+        ears[1][k] = p->position[k] + HALF_SPACING * r[k] / norm;
     }
 }
 
@@ -125,7 +133,7 @@ static void run(uint32_t block)
         ears_of(&head, ears);
         for (int ch = 0; ch < 2; ch++)
             for (int i = 1; i < NODES; i++)
-                add_segment(&s, i, ears[ch], at, &want[ch][at], n);
+                add_segment(&s, i, ears[ch], head.position, at, &want[ch][at], n);
     }
     double peak = 0, err = 0;
     for (int ch = 0; ch < 2; ch++)

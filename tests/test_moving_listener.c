@@ -17,6 +17,7 @@
 
 #include "fulgur/fulgur.h"
 #include "sound/wmwave_internal.h"
+#include "spatial/spherical_head_internal.h"
 
 #define FS 48000.0
 #define C 343.0
@@ -24,7 +25,7 @@
 #define FRAMES ((size_t)(SECONDS * FS))
 #define SPEED 30.0
 #define REPEAT_S 0.0037
-#define HALF_SPACING 0.09
+#define HALF_SPACING 0.0875 /* the default head */
 
 /* A vertical lightning segment of the preset's reference length, its
  * midpoint 11.5 m up; the listener drives past it, 20 m to the side. */
@@ -51,6 +52,16 @@ static double dist(const double a[3], const double b[3])
 {
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
                 (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/* The way from the source to ear ch at time t: the straight line, or
+ * around the spherical head (spatial/spherical_head_internal.h). */
+static double path_len(int ch, double t)
+{
+    fg_listener p = pose_at(t);
+    double ear[3], u[3] = {ch == 0 ? 1.0 : -1.0, 0.0, 0.0}, zero[3] = {0, 0, 0};
+    ear_at(ch, t, ear);
+    return dist(ear, mid) + fg_head_excess_m(mid, p.position, u, HALF_SPACING, zero, zero, NULL);
 }
 
 static fg_sound_config sound(void)
@@ -85,23 +96,19 @@ static void reference(double *out[2])
     for (int ch = 0; ch < 2; ch++) {
         memset(out[ch], 0, FRAMES * sizeof(double));
         for (size_t i = 0; i < n; i++) {
-            double e = at[i] + emit_delay, t = e, ear[3];
-            for (int it = 0; it < 50; it++) { /* fixed point: v / c < 0.1 */
-                ear_at(ch, t, ear);
-                t = e + dist(ear, mid) / C;
-            }
+            double e = at[i] + emit_delay, t = e;
+            for (int it = 0; it < 50; it++) /* fixed point: v / c < 0.1 */
+                t = e + path_len(ch, t) / C;
             long centre = lround(t * FS);
             for (long k = centre - 200; k <= centre + 200; k++) {
                 if (k < 0 || k >= (long)FRAMES)
                     continue;
-                double tc = k / FS, ta = (k - 0.5) / FS, tb = (k + 0.5) / FS, ec[3], ea[3], eb[3];
+                double tc = k / FS, ta = (k - 0.5) / FS, tb = (k + 0.5) / FS, ec[3];
                 ear_at(ch, tc, ec);
-                ear_at(ch, ta, ea);
-                ear_at(ch, tb, eb);
                 double r = dist(ec, mid), s = fabs(ec[2] - mid[2]) / r;
                 fg_wm_shape w = fg_wm_shape_at(&p, p.t0_s, r, s, l, C, NULL);
-                double tau_a = (C * (ta - e) - dist(ea, mid)) / l;
-                double tau_b = (C * (tb - e) - dist(eb, mid)) / l;
+                double tau_a = (C * (ta - e) - path_len(ch, ta)) / l;
+                double tau_b = (C * (tb - e) - path_len(ch, tb)) / l;
                 out[ch][k] += (fg_wm_integral(&w, tau_b) - fg_wm_integral(&w, tau_a)) / (tau_b - tau_a);
             }
         }

@@ -4,7 +4,8 @@
  *
  * Every propagation effect and both voice models are in use.
  * Three threads, as a host would have them:
- *   main      the audio thread: 48 kHz, 256-frame blocks, two ears;
+ *   main      the audio thread: 48 kHz, 256-frame blocks, two ears (and
+ *             again in third-order ambisonics, 16 channels);
  *   producer  the sim thread: posts on a schedule kept on the engine clock
  *             (multi-stroke lightning, sparks, a continuous plasma ball it
  *             stops midway) and collects;
@@ -229,12 +230,16 @@ static void assert_guard_clean(const rt_guard_counts *total)
     assert_int_equal(total->sleep, 0);
 }
 
-static void test_ten_seconds_armed(void **state)
+/* Ten seconds in a layout: channels 0 and 1 are kept (the ears, or W and
+ * Y), the others rendered into scratch. */
+static void ten_seconds_armed(fg_layout layout, uint32_t order)
 {
-    (void)state;
     fg_engine_config cfg;
-    assert_int_equal(fg_engine_config_resolve(NULL, &cfg), FG_OK);
+    assert_int_equal(fg_engine_config_resolve(
+                         &(fg_engine_config){.layout = layout, .ambisonic_order = order}, &cfg),
+                     FG_OK);
     cfg.max_block_frames = BLOCK;
+    static float scratch[16][BLOCK];
     shared sh = {.stop_result = FG_ERR_ARGUMENT};
     /* the guard sees the statically linked engine's calls: creating allocates */
     rt_guard_arm();
@@ -263,7 +268,9 @@ static void test_ten_seconds_armed(void **state)
             while (atomic_load_explicit(&sh.poses, memory_order_acquire) == seen)
                 sched_yield();
         }
-        float *planes[2] = {left + (size_t)b * BLOCK, right + (size_t)b * BLOCK};
+        float *planes[16] = {left + (size_t)b * BLOCK, right + (size_t)b * BLOCK};
+        for (uint32_t ch = 2; ch < cfg.channels; ch++)
+            planes[ch] = scratch[ch];
         fg_engine_report meter;
         assert_int_equal(render_armed(e, planes, BLOCK, &meter, &total), FG_OK);
         assert_int_equal(meter.blocks, (uint64_t)b + 1);
@@ -313,6 +320,20 @@ static void test_ten_seconds_armed(void **state)
     }
     assert_true(differ > (size_t)BLOCKS * BLOCK / 100);
     fg_engine_destroy(e);
+}
+
+static void test_ten_seconds_armed(void **state)
+{
+    (void)state;
+    ten_seconds_armed(FG_LAYOUT_STEREO, 0);
+}
+
+/* The same in third-order ambisonics: 16 channels, the field turned with
+ * the moving listener, wave by wave. */
+static void test_ten_seconds_armed_ambisonic(void **state)
+{
+    (void)state;
+    ten_seconds_armed(FG_LAYOUT_AMBISONICS, 3);
 }
 
 /* The render paths a smooth run never takes, armed: zero frames, too many
@@ -401,6 +422,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ten_seconds_armed),
+        cmocka_unit_test(test_ten_seconds_armed_ambisonic),
         cmocka_unit_test(test_rare_paths_armed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

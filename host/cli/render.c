@@ -42,7 +42,39 @@ static const char notes[] =
     "pascals that full scale stands for, is then written into the WAV's comment\n"
     "(LIST/INFO ICMT, \"fulgur calibration: full scale = X Pa\") and printed, and\n"
     "fulgur analyze reads it back to pascals.\n"
+    "Layouts (docs/spatial.md): stereo (the default) is the scene's \"channels\", left and\n"
+    "right ears on a spherical head; ambisonics:ORDER writes AmbiX, (ORDER+1)^2 channels\n"
+    "in ACN order with SN3D normalisation (4, 9 or 16 for orders 1, 2, 3).\n"
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
+
+/* --layout: the output layout every scene is rendered in. */
+typedef struct render_layout {
+    bool given;
+    fg_layout layout;
+    uint32_t order;     /* ambisonics */
+} render_layout;
+
+static int parse_layout(const char *text, void *value, char *why, size_t why_size)
+{
+    render_layout *l = value;
+    static const char ambi[] = "ambisonics:";
+    if (strcmp(text, "stereo") == 0) {
+        *l = (render_layout){true, FG_LAYOUT_STEREO, 0};
+        return 0;
+    }
+    if (strncmp(text, ambi, sizeof ambi - 1) == 0) {
+        const char *n = text + sizeof ambi - 1;
+        if (n[0] >= '0' + (int)FG_AMBISONIC_ORDER_MIN && n[0] <= '0' + (int)FG_AMBISONIC_ORDER_MAX &&
+            n[1] == '\0') {
+            *l = (render_layout){true, FG_LAYOUT_AMBISONICS, (uint32_t)(n[0] - '0')};
+            return 0;
+        }
+        snprintf(why, why_size, "ambisonic order \"%s\": expected 1, 2 or 3", n);
+        return -1;
+    }
+    snprintf(why, why_size, "\"%s\": expected stereo or ambisonics:ORDER (1..3)", text);
+    return -1;
+}
 
 /* The --set values, in order. */
 typedef struct set_list {
@@ -308,6 +340,7 @@ typedef struct render_args {
     const char *manifest;
     bool quiet;
     set_list sets;
+    render_layout layout;
 } render_args;
 
 /* Every scene read with the --set values; a bad one stops them all. "SCENE: "
@@ -317,8 +350,16 @@ static int load_scenes(const render_args *a, scene *scenes)
     char err[512];
     for (size_t i = 0; i < a->scene_count; i++) {
         if (scene_load_with(a->scenes[i], a->sets.items, a->sets.count, &scenes[i], err,
-                            sizeof err) == 0)
+                            sizeof err) == 0) {
+            if (a->layout.given) {
+                scenes[i].layout = a->layout.layout;
+                scenes[i].ambisonic_order = a->layout.order;
+                scenes[i].channels = a->layout.layout == FG_LAYOUT_AMBISONICS
+                                         ? (a->layout.order + 1) * (a->layout.order + 1)
+                                         : 2;
+            }
             continue;
+        }
         if (a->scene_count > 1)
             fprintf(stderr, "fulgur: %s: %s\n", a->scenes[i], err);
         else
@@ -455,6 +496,9 @@ static int parse_args(int argc, char **argv, render_args *a)
         {"--manifest", OPTION_TEXT, &a->manifest, "FILE",
          .help = "a JSON line per file written: scene, seed, duration, peak,\n"
                  "calibration (- : stdout, the summary lines then to stderr)"},
+        {"--layout", OPTION_PARSED, &a->layout, "LAYOUT", .parse = parse_layout,
+         .help = "stereo (default) or ambisonics:ORDER, ORDER 1..3 (AmbiX:\n"
+                 "ACN order, SN3D; 4, 9 or 16 channels)"},
         {"--quiet", OPTION_FLAG, &a->quiet,
          .help = "no summary line, no progress line, no warning of clipping"},
         {"--png", OPTION_TEXT, &a->png, "OUT.png",

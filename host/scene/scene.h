@@ -80,9 +80,14 @@ typedef struct scene_camera {
     double fov_y_deg;          /* vertical field of view, default 45 */
 } scene_camera;
 
+/* Output channels at most: third-order ambisonics. */
+#define SCENE_MAX_CHANNELS 16
+
 typedef struct scene {
     double sample_rate_hz;
-    uint32_t channels;
+    uint32_t channels;         /* the layout's: 1 or 2 for stereo, (order + 1)^2 ambisonic */
+    fg_layout layout;          /* FG_LAYOUT_STEREO unless a host sets another (render --layout) */
+    uint32_t ambisonic_order;  /* FG_LAYOUT_AMBISONICS: 1..3 */
     uint32_t block_frames;
     double duration_s;         /* 0: until every discharge has finished sounding */
     uint64_t seed;
@@ -195,8 +200,9 @@ int scene_discharge_apparatus(const scene *s, size_t index, scene_apparatus *out
  * bounds fill the 45 degree vertical view or the horizontal one. */
 void scene_camera_framing(const scene *s, size_t index, double aspect, scene_camera *out);
 
-/* The engine configuration the scene asks for (rate, block, channels, the
- * air); voices and segments are left at 0 (the defaults) for the caller. */
+/* The engine configuration the scene asks for (rate, block, channels and
+ * layout, the air); voices and segments are left at 0 (the defaults) for
+ * the caller. */
 void scene_engine_config(const scene *s, fg_engine_config *out);
 
 /* The discharge indices by time, then index: the posting order. NULL when

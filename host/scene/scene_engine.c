@@ -10,6 +10,8 @@ void scene_engine_config(const scene *s, fg_engine_config *out)
         .sample_rate_hz = s->sample_rate_hz,
         .max_block_frames = s->block_frames,
         .channels = s->channels,
+        .layout = s->layout,
+        .ambisonic_order = s->ambisonic_order,
         .speed_of_sound_m_s = s->speed_of_sound_m_s,
         .air_temperature_k = s->temperature_c + 273.15,
         .air_humidity_pct = s->humidity_pct,

@@ -23,7 +23,7 @@ typedef struct render_job {
     bool *aero_done;        /* posted and since collected */
     bool *aero_warned;      /* counted in aero_beyond_range */
     size_t aeros_posted;
-    float *planes[2];
+    float *planes[SCENE_MAX_CHANNELS];
     size_t segments;
     double pose_period_s;   /* between published poses */
     uint64_t next_pose;     /* the next pose to publish, in periods from 0 */
@@ -54,9 +54,10 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
     job->aero_ids = calloc(s->aero_count + 1, sizeof *job->aero_ids);
     job->aero_done = calloc(s->aero_count + 1, sizeof *job->aero_done);
     job->aero_warned = calloc(s->aero_count + 1, sizeof *job->aero_warned);
+    bool planes = true;
     for (uint32_t ch = 0; ch < s->channels; ch++)
-        job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float));
-    if (!job->order || !job->aero_ids || !job->aero_done || !job->aero_warned || !job->planes[0] || (s->channels == 2 && !job->planes[1])) {
+        planes = (job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float))) && planes;
+    if (!job->order || !job->aero_ids || !job->aero_done || !job->aero_warned || !planes) {
         snprintf(err, err_size, "out of memory");
         return FG_ERR_NO_MEMORY;
     }
@@ -214,7 +215,7 @@ fg_result scene_render(const scene *s, const scene_render_sink *sink,
     free(job.aero_ids);
     free(job.aero_done);
     free(job.aero_warned);
-    free(job.planes[0]);
-    free(job.planes[1]);
+    for (uint32_t ch = 0; ch < SCENE_MAX_CHANNELS; ch++)
+        free(job.planes[ch]);
     return rc;
 }

@@ -76,11 +76,15 @@ fg_result fg_propagation_config_resolve(const fg_propagation_config *in,
 
 /* engine.h */
 typedef struct fg_engine fg_engine;
+typedef enum fg_layout { FG_LAYOUT_STEREO = 0, FG_LAYOUT_AMBISONICS = 1 } fg_layout;
+#define FG_AMBISONIC_ORDER_MIN 1
+#define FG_AMBISONIC_ORDER_MAX 3
 typedef struct fg_engine_config {
     double sample_rate_hz; uint32_t max_block_frames; uint32_t channels; uint32_t max_voices;
     uint32_t segment_capacity; double speed_of_sound_m_s; double ear_spacing_m;
     double max_lookahead_s; uint32_t max_adopt_per_block; double air_temperature_k;
     double air_humidity_pct; double air_pressure_kpa; uint32_t work_per_frame;
+    fg_layout layout; uint32_t ambisonic_order;
 } fg_engine_config;
 typedef enum fg_voice_model { FG_MODEL_WM = 0, FG_MODEL_ABE = 1 } fg_voice_model;
 #define FG_MAX_STROKES 32

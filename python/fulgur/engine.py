@@ -23,6 +23,7 @@ from . import _convert
 from ._native import EMIT_NOW, ffi, lib
 from .errors import FulgurError, check
 
+LAYOUT = {"stereo": lib.FG_LAYOUT_STEREO, "ambisonics": lib.FG_LAYOUT_AMBISONICS}
 ABSORPTION = {"off": lib.FG_ABSORPTION_OFF, "iso9613": lib.FG_ABSORPTION_ISO9613,
               "abe_fir": lib.FG_ABSORPTION_ABE_FIR}
 MODELS = {"wm": lib.FG_MODEL_WM, "abe": lib.FG_MODEL_ABE}
@@ -74,15 +75,16 @@ class Engine:
     fg_engine_config (sample_rate_hz, max_block_frames, channels,
     max_voices, segment_capacity, speed_of_sound_m_s, ear_spacing_m,
     max_lookahead_s, max_adopt_per_block, air_temperature_k,
-    air_humidity_pct, air_pressure_kpa); those not given take the engine's
-    defaults."""
+    air_humidity_pct, air_pressure_kpa, layout ("stereo" or "ambisonics"),
+    ambisonic_order); those not given take the engine's defaults."""
 
     def __init__(self, config=None, **settings):
         values = dict(config or {}) if config is None or hasattr(config, "items") else None
         if values is None:
             raise TypeError(f"config: expected a dict, got {type(config).__name__}")
         values.update(settings)
-        cfg = _convert.fill(ffi.new("fg_engine_config *"), values, "config")
+        cfg = _convert.fill(ffi.new("fg_engine_config *"), values, "config",
+                            names={"layout": LAYOUT})
         out = ffi.new("fg_engine **")
         check(lib.fg_engine_create(cfg, out), "fg_engine_create")
         self._handle = out[0]

@@ -47,15 +47,36 @@ typedef struct fg_engine fg_engine;
 #define FG_WORK_PER_FRAME_DEFAULT 64u
 #define FG_WORK_BLOCK_FLOOR 4096u
 
+/* The output layout: what the channels carry (docs/spatial.md). */
+typedef enum fg_layout {
+    /* Ears on a spherical head (radius ear_spacing_m / 2): channels 2 =
+     * left, right, each with Woodworth's delay around the head and, for
+     * discharges with head_shadow, Brown & Duda's head shadow; channels
+     * 1 = one ear at the head's centre. */
+    FG_LAYOUT_STEREO = 0,
+    /* AmbiX: ambisonic_order 1..3, (order + 1)^2 channels in ACN order,
+     * SN3D normalisation, the field at the head's centre in the head's
+     * frame (x ahead, y left, z up), each wave encoded from where it
+     * arrives at the moment it arrives, so a turning head rotates the field
+     * smoothly. */
+    FG_LAYOUT_AMBISONICS = 1
+} fg_layout;
+
+#define FG_AMBISONIC_ORDER_MIN 1u
+#define FG_AMBISONIC_ORDER_MAX 3u
+
 /* Zero in any field means "the default" given in its comment. */
 typedef struct fg_engine_config {
     double sample_rate_hz;        /* 48000; must lie in [8000, 384000] */
     uint32_t max_block_frames;    /* 4096; the largest nframes render accepts, <= 65536 */
-    uint32_t channels;            /* 2; 1 = one ear at the listener's centre, 2 = two ears */
+    uint32_t channels;            /* stereo: 2; 1 = one ear at the listener's centre, 2 = two
+                                   * ears. Ambisonics: (order + 1)^2, the only value allowed */
     uint32_t max_voices;          /* 64; voices alive at once (posted, sounding or uncollected) */
     uint32_t segment_capacity;    /* 131072; segments held by all live discharges together */
     double speed_of_sound_m_s;    /* 343; 331.5 + 0.6 * (temperature in degC) */
-    double ear_spacing_m;         /* 0.18; distance between the two ears */
+    double ear_spacing_m;         /* 0.175; distance between the two ears: the diameter of
+                                   * the spherical head they sit on (Woodworth's delay
+                                   * around it, Brown & Duda's head shadow; radius 8.75 cm) */
     double max_lookahead_s;       /* 0.25; cap on the motion look-ahead (see fg_engine_render) */
     uint32_t max_adopt_per_block; /* 8; posted voices the audio thread takes per block */
     /* The air, for FG_ABSORPTION_ISO9613 (ISO 9613-1). */
@@ -63,6 +84,8 @@ typedef struct fg_engine_config {
     double air_humidity_pct;      /* 70; relative humidity in (0, 100] */
     double air_pressure_kpa;      /* 101.325 */
     uint32_t work_per_frame;      /* FG_WORK_PER_FRAME_DEFAULT; the work bound above, <= 65536 */
+    fg_layout layout;             /* FG_LAYOUT_STEREO */
+    uint32_t ambisonic_order;     /* ambisonics: 1; FG_AMBISONIC_ORDER_MIN..MAX. Stereo: 0 */
 } fg_engine_config;
 
 /* The voice model a discharge is rendered with. */
@@ -162,7 +185,9 @@ FG_API FG_NODISCARD fg_result fg_engine_config_resolve(const fg_engine_config *c
  * here. config may be NULL (all defaults). *out is owned by the caller until
  * fg_engine_destroy. [main-thread]
  * Errors: FG_ERR_NULL out; FG_ERR_SAMPLE_RATE rate outside [8000, 384000];
- * FG_ERR_NOT_FINITE a NaN/inf field; FG_ERR_ARGUMENT channels not 1 or 2, a
+ * FG_ERR_NOT_FINITE a NaN/inf field; FG_ERR_ARGUMENT an unknown layout, an
+ * ambisonic order outside 1..3 (or one given for stereo), channels not 1
+ * or 2 for stereo or not (order + 1)^2 for ambisonics, a
  * speed of sound outside [FG_SPEED_OF_SOUND_MIN_M_S, FG_SPEED_OF_SOUND_MAX_M_S],
  * a negative spacing/look-ahead, block > 65536, voices, segments or work
  * too large, air outside 200-350 K, (0, 100] %, 10-200 kPa; FG_ERR_NO_MEMORY. */
@@ -220,7 +245,8 @@ FG_API size_t fg_engine_collect(fg_engine *engine);
  * before, each wave's geometry computed once. An event joins the block loop
  * when its waveform could start before the block's end given the
  * listener's displacement d from where the voice was posted: the look-ahead
- * is (d + ear_spacing)/c, capped at max_lookahead_s; events brought forward
+ * is (d + 1.3 ear_spacing)/c (the way around the head to the far ear
+ * included), capped at max_lookahead_s; events brought forward
  * by more than that are counted as late.
  * Bounded: the block's work stops at the bound above (FG_WORK_PER_FRAME_DEFAULT),
  * at most 64 emissions (strokes, repeats) of a voice sound at once, and a voice

@@ -2,8 +2,8 @@
 #include <string.h>
 
 #include "bus_internal.h"
-#include "air/head_shadow_internal.h"
 #include "air/absorb_filter_internal.h"
+#include "spatial/spherical_head_internal.h"
 
 /* The band centres: 10 m to 30 km, log-spaced. */
 #define BAND_NEAR_M 10.0
@@ -21,13 +21,13 @@ static bool is_band(unsigned b)
 }
 
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
-                          double c_m_s, const fg_air *air)
+                          double c_m_s, double head_radius_m, const fg_air *air)
 {
     memset(s, 0, sizeof *s);
     size_t planes = (size_t)FG_BUS_COUNT * channels;
     s->d3 = calloc(planes * max_frames, sizeof *s->d3);
     s->pre = calloc(planes * max_frames, sizeof *s->pre);
-    s->fir = calloc(4, sizeof *s->fir);
+    s->fir = calloc(2 * (size_t)channels, sizeof *s->fir);
     if (!s->d3 || !s->pre || !s->fir) {
         fg_bus_set_deinit(s);
         return FG_ERR_NO_MEMORY;
@@ -37,17 +37,18 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     s->fs_hz = fs_hz;
     s->air = *air;
     fg_result r = fg_band_plan_init(&s->plan, BAND_NEAR_M, BAND_FAR_M, FG_ABSORPTION_BANDS);
-    for (int i = 0; i < 4 && r == FG_OK; i++)
+    for (unsigned i = 0; i < 2 * channels && r == FG_OK; i++)
         r = fg_abe_fir_init(&s->fir[i], fs_hz);
     if (r != FG_OK) {
         fg_bus_set_deinit(s);
         return r;
     }
-    fg_biquad shelf = fg_head_shelf(-10.0, fs_hz, c_m_s);
+    /* no head (one ear, or a spacing of 0) sends nothing to the twins */
+    fg_biquad hp = fg_head_highpass(head_radius_m > 0 ? head_radius_m : 1.0, fs_hz, c_m_s);
     for (unsigned b = 0; b < FG_BUS_PLAIN; b++) {
-        for (unsigned ch = 0; ch < 2; ch++) {
-            s->shelf[b][ch] = (fg_iir){.sec = {shelf}, .sections = 1};
-            fg_iir_reset(&s->shelf[b][ch]);
+        for (unsigned ch = 0; ch < channels; ch++) {
+            s->shadow[b][ch] = (fg_iir){.sec = {hp}, .sections = 1};
+            fg_iir_reset(&s->shadow[b][ch]);
         }
     }
     for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
@@ -82,7 +83,8 @@ void fg_bus_set_design_bands(fg_bus_set *s)
         fg_absorb_design(&f, &s->air, s->plan.centre_m[k], s->fs_hz, &fit);
         fg_iir_reset(&f);
         for (unsigned twin = 0; twin < 2; twin++)
-            s->band[twin][k][0] = s->band[twin][k][1] = f;
+            for (unsigned ch = 0; ch < s->channels; ch++)
+                s->band[twin][k][ch] = f;
     }
     s->bands_designed = true;
 }
@@ -178,12 +180,12 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
                 tail = ringing(band_filter(s, b, ch));
             }
             if (is_fir(b)) {
-                fg_abe_fir_process(&s->fir[2 * (b / FG_BUS_PLAIN) + ch], x, n);
+                fg_abe_fir_process(&s->fir[(b / FG_BUS_PLAIN) * s->channels + ch], x, n);
                 bus->quiet[ch] = input ? 0 : bus->quiet[ch] + n;
             }
             if (b >= FG_BUS_PLAIN) {
-                fg_iir_process(&s->shelf[b - FG_BUS_PLAIN][ch], x, n);
-                tail = tail || ringing(&s->shelf[b - FG_BUS_PLAIN][ch]);
+                fg_iir_process(&s->shadow[b - FG_BUS_PLAIN][ch], x, n);
+                tail = tail || ringing(&s->shadow[b - FG_BUS_PLAIN][ch]);
             }
             bus->ringing[ch] = tail;
             for (uint32_t i = 0; i < n; i++)

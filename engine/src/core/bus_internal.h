@@ -5,8 +5,11 @@
  * the (k-1)-th and (k+1)-th ISO 9613-1 band centres, each split between
  * its two nearest bands, through that band's fitted IIR;
  * FG_BUS_FIR carries Abe's 200 Hz FIR. Each has a head-shadowed twin at
- * index + FG_BUS_PLAIN, which adds the far-ear shelf. The buses are shared
- * by every voice: the air's response depends only on the distance band. */
+ * index + FG_BUS_PLAIN, which adds the high-pass of Brown & Duda's head
+ * model (spatial/spherical_head_internal.h): a wave sent whole to a bus
+ * and alpha - 1 of it to the twin is heard through the head's one-pole,
+ * one-zero filter for its angle. The buses are shared by every voice: the
+ * air's response depends only on the distance band. */
 #ifndef FULGUR_BUS_INTERNAL_H
 #define FULGUR_BUS_INTERNAL_H
 
@@ -28,12 +31,15 @@ enum {
     FG_BUS_COUNT = 2 * FG_BUS_PLAIN
 };
 
+/* Output channels at most: a third-order ambisonic layout's 16. */
+#define FG_BUS_MAX_CHANNELS 16
+
 typedef struct fg_bus {
-    fg_accum accum[2];   /* difference-domain input (the WM-waves), per ear */
-    float *pre[2];       /* the ear's signal before the filters */
-    bool pre_used[2];    /* something was written into pre this block */
-    uint32_t quiet[2];   /* frames since the FIR last had input */
-    bool ringing[2];     /* the IIR filters still hold a tail; audio thread only */
+    fg_accum accum[FG_BUS_MAX_CHANNELS]; /* difference-domain input (the WM-waves), per channel */
+    float *pre[FG_BUS_MAX_CHANNELS];     /* the channel's signal before the filters */
+    bool pre_used[FG_BUS_MAX_CHANNELS];  /* something was written into pre this block */
+    uint32_t quiet[FG_BUS_MAX_CHANNELS]; /* frames since the FIR last had input */
+    bool ringing[FG_BUS_MAX_CHANNELS];   /* the IIR filters still hold a tail; audio thread only */
 } fg_bus;
 
 typedef struct fg_bus_set {
@@ -44,19 +50,20 @@ typedef struct fg_bus_set {
     float *pre;          /* the same count of floats */
     /* filters: shared coefficients, state per ear */
     fg_band_plan plan;
-    fg_iir band[2][FG_ABSORPTION_BANDS][2]; /* [plain, shadowed twin][band][ear] */
+    fg_iir band[2][FG_ABSORPTION_BANDS][FG_BUS_MAX_CHANNELS]; /* [plain, twin][band][channel] */
     bool bands_designed; /* sim thread only: the audio thread touches a band's
                           * filter after adopting a voice that needed it, so
                           * the inbox ring orders the design before */
-    fg_abe_fir *fir;     /* [2 (plain, shadowed)][2 ears] */
-    fg_iir shelf[FG_BUS_PLAIN][2];
+    fg_abe_fir *fir;     /* [2 (plain, shadowed)][channels] */
+    fg_iir shadow[FG_BUS_PLAIN][FG_BUS_MAX_CHANNELS]; /* the twins' head high-pass */
     fg_air air;
     double fs_hz;
 } fg_bus_set;
 
-/* Allocates the buses for max_frames-frame blocks. [main-thread] */
+/* Allocates the buses for max_frames-frame blocks, the twins' filter for
+ * a head of radius head_radius_m (0: none). [main-thread] */
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
-                          double c_m_s, const fg_air *air);
+                          double c_m_s, double head_radius_m, const fg_air *air);
 void fg_bus_set_deinit(fg_bus_set *s);
 
 /* Designs the ISO 9613-1 band filters the first time a voice needs them
@@ -71,11 +78,12 @@ unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m, double *w_next);
 /* Starts a block of n frames on every bus. [audio-thread] */
 void fg_bus_set_begin(fg_bus_set *s, uint32_t n);
 
-/* The float buffer of bus b, ear ch, for waves rendered sample by sample. */
+/* The float buffer of bus b, channel ch, for waves rendered sample by
+ * sample. */
 float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch);
 
-/* The difference-domain accumulator of bus b, ear ch, for waves added per
- * breakpoint. [audio-thread] */
+/* The difference-domain accumulator of bus b, channel ch, for waves added
+ * per breakpoint. [audio-thread] */
 static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
 {
     return &s->bus[b].accum[ch];

@@ -7,6 +7,7 @@
 
 #include "engine_internal.h"
 #include "fg_rules.h"
+#include "spatial/layout_internal.h"
 
 #define MAX_BLOCK_LIMIT 65536u
 #define MAX_VOICES_LIMIT 65536u
@@ -22,7 +23,7 @@ static const fg_engine_config defaults = {
     .max_voices = 64,
     .segment_capacity = 131072,
     .speed_of_sound_m_s = 343.0,
-    .ear_spacing_m = 0.18,
+    .ear_spacing_m = 0.175,
     .max_lookahead_s = 0.25,
     .max_adopt_per_block = 8,
     .air_temperature_k = 293.15,
@@ -47,7 +48,24 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
     if (in->sample_rate_hz != 0 && (in->sample_rate_hz < FG_SAMPLE_RATE_MIN_HZ ||
                                     in->sample_rate_hz > FG_SAMPLE_RATE_MAX_HZ))
         return FG_ERR_SAMPLE_RATE;
-    if (in->max_block_frames > MAX_BLOCK_LIMIT || (in->channels != 0 && in->channels > 2) ||
+    uint32_t order = 0, channels = FG_DEF(in->channels, defaults.channels);
+    switch (in->layout) {
+    case FG_LAYOUT_STEREO:
+        if (in->ambisonic_order != 0 || channels > 2)
+            return FG_ERR_ARGUMENT;
+        break;
+    case FG_LAYOUT_AMBISONICS:
+        order = FG_DEF(in->ambisonic_order, FG_AMBISONIC_ORDER_MIN);
+        if (order > FG_AMBISONIC_ORDER_MAX)
+            return FG_ERR_ARGUMENT;
+        channels = fg_ambisonic_channels(order);
+        if (in->channels != 0 && in->channels != channels)
+            return FG_ERR_ARGUMENT;
+        break;
+    default:
+        return FG_ERR_ARGUMENT;
+    }
+    if (in->max_block_frames > MAX_BLOCK_LIMIT ||
         in->max_voices > MAX_VOICES_LIMIT || in->segment_capacity > SEGMENT_LIMIT ||
         (in->speed_of_sound_m_s != 0 && (in->speed_of_sound_m_s < FG_SPEED_OF_SOUND_MIN_M_S ||
                                          in->speed_of_sound_m_s > FG_SPEED_OF_SOUND_MAX_M_S)) ||
@@ -61,7 +79,7 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
     *out = (fg_engine_config){
         .sample_rate_hz = FG_DEF(in->sample_rate_hz, defaults.sample_rate_hz),
         .max_block_frames = FG_DEF(in->max_block_frames, defaults.max_block_frames),
-        .channels = FG_DEF(in->channels, defaults.channels),
+        .channels = channels,
         .max_voices = FG_DEF(in->max_voices, defaults.max_voices),
         .segment_capacity = FG_DEF(in->segment_capacity, defaults.segment_capacity),
         .speed_of_sound_m_s = FG_DEF(in->speed_of_sound_m_s, defaults.speed_of_sound_m_s),
@@ -72,6 +90,8 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
         .air_humidity_pct = FG_DEF(in->air_humidity_pct, defaults.air_humidity_pct),
         .air_pressure_kpa = FG_DEF(in->air_pressure_kpa, defaults.air_pressure_kpa),
         .work_per_frame = FG_DEF(in->work_per_frame, defaults.work_per_frame),
+        .layout = in->layout,
+        .ambisonic_order = order,
     };
     return FG_OK;
 }
@@ -129,7 +149,9 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
     fg_air air = {cfg.air_temperature_k - 273.15, cfg.air_humidity_pct, cfg.air_pressure_kpa};
     if (r == FG_OK)
         r = ok ? fg_bus_set_init(&e->buses, cfg.channels, cfg.max_block_frames,
-                                 cfg.sample_rate_hz, cfg.speed_of_sound_m_s, &air)
+                                 cfg.sample_rate_hz, cfg.speed_of_sound_m_s,
+                                 fg_layout_ears(&cfg) == 2 ? 0.5 * cfg.ear_spacing_m : 0.0,
+                                 &air)
                : FG_ERR_NO_MEMORY;
     if (r != FG_OK) {
         fg_engine_destroy(e);

@@ -44,7 +44,7 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
     fg_head head;
     fg_trajectory_head(&e->trajectory, start_s, &head);
     fg_ears ears;
-    fg_head_ears(&head, e->cfg.channels, e->cfg.ear_spacing_m, &ears);
+    fg_head_ears(&head, fg_layout_ears(&e->cfg), e->cfg.ear_spacing_m, &ears);
     fg_bus_set_begin(&e->buses, nframes);
     uint64_t work_left = (uint64_t)e->cfg.work_per_frame * nframes + FG_WORK_BLOCK_FLOOR;
     fg_block_context block = {

@@ -25,10 +25,16 @@
  * only that, and the audio thread never allocates. Several models may
  * share a kind (the WM-wave and Abe's models share the discharge kind).
  *
- * Output. A model renders into the bus set (core/bus_internal.h): per bus
- * and ear, a difference-domain accumulator (fg_bus_accum) for waves added
+ * Output. A model renders through the output layout
+ * (spatial/layout_internal.h) into the bus set (core/bus_internal.h): for
+ * each ear the layout asks for (fg_layout_ears) it computes a wave's
+ * geometry, and fg_layout_gains names the output channels the wave reaches
+ * and their gains (the ear's own channel in stereo; every ambisonic
+ * channel, by the direction the wave arrives from). Per bus and channel
+ * there is a difference-domain accumulator (fg_bus_accum) for waves added
  * per breakpoint, and a float buffer (fg_bus_pre) for samples rendered
- * one by one. The buses then apply the air's filters, once per bus. */
+ * one by one. The buses then apply the air's filters, once per bus and
+ * channel. docs/spatial.md shows a model doing it. */
 #ifndef FULGUR_SOURCE_INTERNAL_H
 #define FULGUR_SOURCE_INTERNAL_H
 
@@ -40,6 +46,7 @@
 #include "bus_internal.h"
 #include "listener_internal.h"
 #include "trajectory_internal.h"
+#include "spatial/layout_internal.h"
 #include "fulgur/engine.h"
 
 /* What the audio thread reports, as atomic counters other threads read. */

@@ -168,6 +168,13 @@ void fg_head_ears(const fg_head *head, unsigned channels, double spacing_m, fg_e
 {
     out->count = channels;
     memcpy(out->right, head->right, sizeof out->right);
+    memcpy(out->right_rate, head->right_rate, sizeof out->right_rate);
+    fg_vec3 right = fg_v3_load(head->right), ahead = fg_v3_unit(fg_v3_load(head->forward));
+    fg_v3_store(ahead, out->ahead);
+    fg_v3_store(fg_v3_unit(fg_v3_cross(right, ahead)), out->above);
+    memcpy(out->centre, head->position, sizeof out->centre);
+    memcpy(out->centre_vel, head->velocity, sizeof out->centre_vel);
+    out->radius_m = channels == 1 ? 0.0 : 0.5 * spacing_m;
     if (channels == 1) {
         memcpy(out->pos[0], head->position, sizeof out->pos[0]);
         memcpy(out->vel[0], head->velocity, sizeof out->vel[0]);

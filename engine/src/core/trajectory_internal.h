@@ -42,11 +42,18 @@ typedef struct fg_head {
     double right_rate[3]; /* d right / dt, 1/s: the ears' share of a turn */
 } fg_head;
 
-/* Where the ears are: channel 0 is the left ear, 1 the right. */
+/* Where the ears are: channel 0 is the left ear, 1 the right, at the ends
+ * of the head's diameter (spatial/spherical_head_internal.h). */
 typedef struct fg_ears {
     double pos[2][3];
     double vel[2][3];     /* m/s */
     double right[3];      /* unit vector from the left ear to the right */
+    double right_rate[3]; /* d right / dt, 1/s */
+    double ahead[3], above[3]; /* unit, with right the head's orthonormal frame:
+                                * ahead along forward, above = right x ahead */
+    double centre[3];     /* the head's centre */
+    double centre_vel[3]; /* m/s */
+    double radius_m;      /* the head's: half the ear spacing; 0 with one ear */
     unsigned count;
 } fg_ears;
 
@@ -82,7 +89,7 @@ void fg_trajectory_head(const fg_trajectory *t, double t_s, fg_head *out);
 void fg_head_of_pose(const fg_listener *pose, fg_head *out);
 
 /* The ears of a head: one at its centre (channels 1) or two, spacing_m
- * apart along its right axis. */
+ * apart along its right axis (the diameter of its sphere). */
 void fg_head_ears(const fg_head *head, unsigned channels, double spacing_m, fg_ears *out);
 
 /* The largest distance the head comes from point p between times a_s and

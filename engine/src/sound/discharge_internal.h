@@ -42,8 +42,10 @@ typedef struct fg_event_ear {
         fg_wm_shape wm;   /* the WM-wave (wm_model.c) */
         fg_abe_wave abe;  /* Abe's wave, arrival relative to the emission (abe_model.c) */
     };
-    float shadow;         /* head shadow: the share sent to the shadowed twin */
+    float shadow;         /* head shadow: the weight alpha - 1 sent to the shadowed twin */
     float band_w;         /* the share sent to bus + 1, the next distance band */
+    float dir[3];         /* where the wave comes from, unit, in the head's frame (x
+                           * ahead, y left, z up): the layout's encoding */
     uint8_t bus;          /* the filter bus (bus_internal.h) */
 } fg_event_ear;
 
@@ -77,13 +79,14 @@ typedef struct fg_ear_path {
 
 /* Where ear ch of an event is added in this block, for one instance. */
 typedef struct fg_event_play {
+    const fg_engine_config *cfg; /* the layout */
     fg_bus_set *buses;
-    /* the buses an ear's wave goes to and its share of each (a zero share
+    /* the buses an ear's wave goes to and its weight on each (a zero one
      * is skipped): the distance band and the next one, each plain and
      * head-shadowed (its twin, + FG_BUS_PLAIN) */
     unsigned bus[FG_PLAY_BUSES];
     double share[FG_PLAY_BUSES];
-    unsigned ch;
+    unsigned ch;          /* the output channel */
     double origin_frame;  /* the instance's emission, samples after the block's start */
     double offset_s;      /* the instance's emission after the voice's */
     double fs_hz;

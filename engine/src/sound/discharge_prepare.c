@@ -140,7 +140,7 @@ fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void
     fg_head head;
     fg_head_of_pose(post->pose, &head);
     fg_ears ears;
-    fg_head_ears(&head, cfg->channels, cfg->ear_spacing_m, &ears);
+    fg_head_ears(&head, fg_layout_ears(cfg), cfg->ear_spacing_m, &ears);
     memcpy(v->post_position, post->pose->position, sizeof v->post_position);
     v->sound = d->sound;
     fg_result checked = fg_propagation_config_resolve(&d->propagation, &v->propagation);

@@ -39,7 +39,9 @@ static double look_ahead_s(const fg_block_context *ctx, const fg_discharge_voice
                                       ctx->start_frame / cfg->sample_rate_hz,
                                       end_s + WAVE_CENTRE_SPAN_S);
     }
-    double ears = cfg->channels == 2 ? cfg->ear_spacing_m : 0.0;
+    /* an ear's delay from the head's centre lies in [-a, a pi / 2]: the
+     * way around the head spans (1 + pi / 2) a < 1.3 spacing */
+    double ears = fg_layout_ears(cfg) == 2 ? 1.3 * cfg->ear_spacing_m : 0.0;
     /* 1 % for the growth of T with distance, two samples for rounding */
     double m = 1.01 * (moved + ears) / cfg->speed_of_sound_m_s + 2.0 / cfg->sample_rate_hz;
     return m < cfg->max_lookahead_s ? m : cfg->max_lookahead_s;

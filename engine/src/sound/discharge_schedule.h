@@ -44,24 +44,39 @@ static inline fg_event *fg_instance_event(fg_discharge_voice *v, const fg_instan
 }
 
 /* Adds ear ch of event ev, as that ear hears it, to the buses through
- * play (the instance's), splitting it between two distance bands and
- * each with its head-shadowed twin.
- * Returns its status and its first and last sample relative to the block. */
+ * play (the instance's), on each output channel the layout sends it to
+ * with the layout's gain (spatial/layout_internal.h), split between its
+ * two distance bands: whole to each band's plain bus, and alpha - 1 of it
+ * to the head-shadowed twin (spatial/spherical_head_internal.h). Returns
+ * its status and its first and last sample relative to the block. */
 static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg_event_ear *ear,
                                                     fg_event_play *play, unsigned ch,
                                                     fg_discharge_add_fn add, long *first,
                                                     long *last)
 {
-    double shadow = ear->shadow, next = ear->band_w;
-    play->ch = ch;
-    /* head-shadow shares below 2 % go whole to one side */
-    double twin = shadow < 0.02 ? 0.0 : shadow > 0.98 ? 1.0 : shadow;
-    for (unsigned k = 0; k < FG_PLAY_BUSES; k++) {
-        unsigned band = k / 2, shadowed = k % 2;
-        play->bus[k] = ear->bus + band + shadowed * FG_BUS_PLAIN;
-        play->share[k] = (shadowed ? twin : 1.0 - twin) * (band ? next : 1.0 - next);
+    const double dir[3] = {ear->dir[0], ear->dir[1], ear->dir[2]};
+    double gain[FG_AMBISONIC_CHANNELS_MAX];
+    unsigned out;
+    const unsigned count = fg_layout_gains(play->cfg, ch, dir, &out, gain);
+    const double next = ear->band_w;
+    for (unsigned k = 0; k < FG_PLAY_BUSES; k++)
+        play->bus[k] = ear->bus + k / 2 + (k % 2) * FG_BUS_PLAIN;
+    /* the first gain (the ear's, or W's) is 1: its status is the wave's,
+     * the same on every channel; a channel of gain 0 gets nothing */
+    fg_wave_status st = FG_WAVE_DONE;
+    for (unsigned c = 0; c < count; c++) {
+        if (c > 0 && gain[c] == 0.0)
+            continue;
+        play->ch = out + c;
+        for (unsigned k = 0; k < FG_PLAY_BUSES; k++)
+            play->share[k] = gain[c] * (k % 2 ? ear->shadow : 1.0) * (k / 2 ? next : 1.0 - next);
+        fg_wave_status here = add(ev, ear, play, first, last);
+        if (c == 0 || here == FG_WAVE_NON_FINITE)
+            st = here;
+        if (here == FG_WAVE_NON_FINITE)
+            break;
     }
-    return add(ev, ear, play, first, last);
+    return st;
 }
 
 /* Spends the work of one ear evaluated with status st over samples
@@ -94,6 +109,7 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         in->hi++;
 
     fg_event_play play = {
+        .cfg = ctx->cfg,
         .buses = ctx->buses,
         .origin_frame = vb->origin_frame,
         .offset_s = in->offset_s,

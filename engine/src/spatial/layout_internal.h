@@ -1,0 +1,43 @@
+/* The output layout stage (fg_layout): the one place every source model's
+ * waves meet the output channels.
+ *
+ * A model computes, per ear the layout asks for (fg_layout_ears: two for
+ * stereo, one at the head's centre otherwise), each wave's geometry from
+ * the listener's ears (core/trajectory_internal.h) and renders it with
+ * fg_layout_gains into the bus set (core/bus_internal.h): a wave heard by
+ * ear k goes to channel k with gain 1 in stereo (plus the head shadow's
+ * twin, spatial/spherical_head_internal.h); a wave arriving from direction
+ * dir in the head's frame goes to every ambisonic channel c with gain
+ * gain[c]. The buses then filter each channel once per block: the cost of
+ * the layout is one add per wave and output channel, and one pass of the
+ * air's filters per bus and channel, never a filter per wave. */
+#ifndef FULGUR_LAYOUT_INTERNAL_H
+#define FULGUR_LAYOUT_INTERNAL_H
+
+#include "ambisonics_internal.h"
+#include "fulgur/engine.h"
+
+/* How many ears a model evaluates its geometry for. */
+static inline unsigned fg_layout_ears(const fg_engine_config *cfg)
+{
+    return cfg->layout == FG_LAYOUT_STEREO ? cfg->channels : 1u;
+}
+
+/* The output channels a wave of ear ch from head-frame direction dir
+ * reaches, and their gains: writes them to first[0..count) and gain[], and
+ * returns count. Stereo: channel ch alone, gain 1. Ambisonics: every
+ * channel, the SN3D spherical harmonics of dir. [audio-thread] */
+static inline unsigned fg_layout_gains(const fg_engine_config *cfg, unsigned ch,
+                                       const double dir[3], unsigned *first, double *gain)
+{
+    if (cfg->layout == FG_LAYOUT_AMBISONICS) {
+        fg_ambisonic_gains(dir, cfg->ambisonic_order, gain);
+        *first = 0;
+        return fg_ambisonic_channels(cfg->ambisonic_order);
+    }
+    *first = ch;
+    gain[0] = 1.0;
+    return 1;
+}
+
+#endif
