@@ -25,7 +25,9 @@ static const escape_case cases[] = {
     {"line\nnext\ttab\r", "line\\x0Anext\\x09tab\\x0D"},
     {"del\x7f", "del\\x7F"},
     {"\xff\xfe", "\\xFF\\xFE"},
-    {"Z\xc3\xbcrich 1 \xc2\xb5m \xe2\x82\xac \xf0\x9f\x8c\xa9", "Z\xc3\xbcrich 1 \xc2\xb5m \xe2\x82\xac \xf0\x9f\x8c\xa9"},
+    /* u-umlaut, micro, euro, a cloud with lightning (4 bytes) */
+    {"Z\xc3\xbcrich 1 \xc2\xb5m \xe2\x82\xac \xf0\x9f\x8c\xa9",
+     "Z\xc3\xbcrich 1 \xc2\xb5m \xe2\x82\xac \xf0\x9f\x8c\xa9"},
     {"\xc2\x85", "\\xC2\\x85"},             /* NEL, a C1 control */
     {"\xc0\xaf", "\\xC0\\xAF"},             /* overlong '/' */
     {"\xe0\x80\xaf", "\\xE0\\x80\\xAF"},     /* overlong '/', 3 bytes */
