@@ -150,8 +150,9 @@ static void post(run *r, bytes *b)
     d.seed = next(b);
     d.model = (fg_voice_model)(mode >> 2 & 3); /* 2, 3: unknown */
     uint8_t air = next(b);
-    /* 3: unknown; ISO 9613-1 only with bit 7 as well: its first post
-     * designs the engine's filters (0.3 s), which would slow every run */
+    /* 3: unknown; ISO 9613-1 only with bit 7 as well, and no seed has it:
+     * its first post designs the engine's filters (0.3 s, 5 s under ASan),
+     * which would slow every run */
     d.propagation.absorption = (fg_absorption)(air & 3);
     if (d.propagation.absorption == FG_ABSORPTION_ISO9613 && !(air & 128))
         d.propagation.absorption = FG_ABSORPTION_OFF;

@@ -2,7 +2,7 @@
 """Writes the seeds of two fuzz targets:
   corpus/fulgur_fuzz_engine/ (fuzz_engine.c): one per scene feature (a
     spark, a continuous plasma ball, lightning through every propagation
-    effect, ISO 9613-1, Abe's model, a moving listener, parameters at their
+    effect, Abe's model, a moving listener, parameters at their
     limits' edges), in the byte layout the target reads;
   corpus/fulgur_fuzz_wav/ (fuzz_wav.c): WAVs as fulgur and others write
     them (float mono, 16-bit stereo, with fulgur's calibration comment,
@@ -124,7 +124,6 @@ def main():
         "propagation": config(rate_index=0) + post(line((5, 40, 0), (0.5, 0.2, 5), 12), preset=2,
                                                    strokes=0, air=2 | 4 | 8 | 16 | 32 | 64,
                                                    air_values=(BASE,) * 5) + render(16) * 16,
-        "iso9613": config(rate_index=0, block_index=5) + post(spark, air=1 | 128) + render(16) * 2,
         "abe": config(rate_index=1) + post(line((0, 3, 2), (0.01, 0, 0.1), 6), model=1)
         + render(16) * 8,
         "moving": config() + post(spark, emit=30)
