@@ -92,17 +92,25 @@ static void lerp(const double a[3], const double b[3], double u, double out[3])
         out[k] = a[k] + u * (b[k] - a[k]);
 }
 
-/* The sine between forward and up at fraction u of the way from pose a to
- * pose b, as scene_listener_at interpolates them. */
-static double sine_between(const scene_pose *a, const scene_pose *b, double u)
+/* Forward and up (not normalised) at fraction u of the way from pose a to
+ * pose b: the lerp of the unit directions. */
+static void directions_between(const scene_pose *a, const scene_pose *b, double u,
+                               double forward[3], double up[3])
 {
-    double fa[3], fb[3], ua[3], ub[3], f[3], up[3];
+    double fa[3], fb[3], ua[3], ub[3];
     normalise(a->forward, fa);
     normalise(b->forward, fb);
     normalise(a->up, ua);
     normalise(b->up, ub);
-    lerp(fa, fb, u, f);
+    lerp(fa, fb, u, forward);
     lerp(ua, ub, u, up);
+}
+
+/* The sine between forward and up at fraction u of the way from a to b. */
+static double sine_between(const scene_pose *a, const scene_pose *b, double u)
+{
+    double f[3], up[3];
+    directions_between(a, b, u, f, up);
     return sine(f, up);
 }
 
@@ -240,13 +248,8 @@ void scene_listener_at(const scene *s, double t_s, fg_listener *out)
     }
     const scene_pose *a = &p[lo], *b = &p[lo + 1];
     double span = b->time_s - a->time_s, u = (t_s - a->time_s) / span;
-    double fa[3], fb[3], ua[3], ub[3], f[3], up[3];
-    normalise(a->forward, fa);
-    normalise(b->forward, fb);
-    normalise(a->up, ua);
-    normalise(b->up, ub);
-    lerp(fa, fb, u, f);
-    lerp(ua, ub, u, up);
+    double f[3], up[3];
+    directions_between(a, b, u, f, up);
     lerp(a->position_m, b->position_m, u, out->position);
     normalise(f, out->forward);
     normalise(up, out->up);
