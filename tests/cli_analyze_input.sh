@@ -3,7 +3,9 @@
 # fulgur analyze sizes its spectrogram window from the WAV header's rate: an
 # 844-byte file claiming 2 147 483 647 Hz once took 8.3 GB and 25 s. It is
 # refused (exit 2, the rate named) before anything is allocated; the same
-# file at 48 kHz is analysed.
+# file at 48 kHz is analysed. A file cut short (its data chunk declares 200
+# frames, 100 are there) is analysed with a warning that names the file and
+# both counts; the whole file gives none.
 set -u
 fulgur=$1
 tmp=$(mktemp -d)
@@ -15,6 +17,7 @@ wav() {
 }
 wav '\377\377\377\177' > "$tmp/fast.wav"
 wav '\200\273\000\000' > "$tmp/ok.wav"
+head -c 444 "$tmp/ok.wav" > "$tmp/cut.wav"
 "$fulgur" analyze "$tmp/fast.wav" --spectrogram "$tmp/s.dat" 2>"$tmp/err" >/dev/null
 rc=$?
 fail=0
@@ -25,5 +28,13 @@ grep -q "a sample rate of 2147483647 Hz, outside 1..768000" "$tmp/err" ||
 "$fulgur" analyze "$tmp/ok.wav" --spectrogram "$tmp/s.dat" >/dev/null ||
     { echo "the 48 kHz file was not analysed"; fail=1; }
 grep -q "window 4096" "$tmp/s.dat" || { echo "48 kHz: not a 4096 window"; fail=1; }
-[ "$fail" -eq 0 ] && echo "analyze: the header's rate is checked"
+"$fulgur" analyze "$tmp/ok.wav" 2>"$tmp/err" >/dev/null
+grep -q warning "$tmp/err" && { echo "the whole file warned: $(cat "$tmp/err")"; fail=1; }
+"$fulgur" analyze "$tmp/cut.wav" 2>"$tmp/err" >"$tmp/out"
+rc=$?
+[ "$rc" -eq 0 ] || { echo "truncated file: exit $rc, expected 0"; fail=1; }
+grep -q "warning: $tmp/cut.wav is truncated: 100 frames found, 200 declared" "$tmp/err" ||
+    { echo "truncated file: no warning naming it and its frames: $(cat "$tmp/err")"; fail=1; }
+grep -q "0.002 s" "$tmp/out" || { echo "truncated file: not 100 frames long: $(cat "$tmp/out")"; fail=1; }
+[ "$fail" -eq 0 ] && echo "analyze: the header's rate and length are checked"
 exit "$fail"

@@ -1,8 +1,9 @@
 #!/bin/sh
 # usage: cli_render_png.sh FULGUR SCENE
 # fulgur render --png twice: the PNG exists, is a PNG with light in it, and
-# the two runs give identical bytes; no temporary file is left. --size is
-# honoured; a --png-time before anything is lit warns; the usage errors.
+# the two runs give identical bytes; no temporary file is left; the PNG's
+# mode follows the umask as the WAV's does (it was 0600 from mkstemp). --size
+# is honoured; a --png-time before anything is lit warns; the usage errors.
 set -u
 fulgur=$1
 scene=$2
@@ -16,6 +17,13 @@ trap 'rm -rf "$tmp"' EXIT
 [ "$(wc -c < "$tmp/a.png")" -gt 2000 ] || { echo "the PNG is suspiciously small (black?)"; exit 1; }
 cmp "$tmp/a.png" "$tmp/b.png" || { echo "two pictures differ"; exit 1; }
 [ -z "$(ls "$tmp" | grep tmp-)" ] || { echo "temporary files left"; exit 1; }
+for mask in 022 077; do
+    (umask $mask && "$fulgur" render "$scene" -o "$tmp/m.wav" --png "$tmp/m.png" >/dev/null) || exit 1
+    want=$(printf '%o' $((0666 & ~0$mask)))
+    [ "$(stat -c %a "$tmp/m.png")" = "$want" ] && [ "$(stat -c %a "$tmp/m.wav")" = "$want" ] ||
+        { echo "umask $mask: PNG mode $(stat -c %a "$tmp/m.png"), WAV $(stat -c %a "$tmp/m.wav"), not $want"; exit 1; }
+    rm -f "$tmp/m.png" "$tmp/m.wav"
+done
 # an unwritable PNG path: exit 1, no file
 if "$fulgur" render "$scene" -o "$tmp/c.wav" --png "$tmp/missing/c.png"; then
     echo "an unwritable --png path was accepted"; exit 1

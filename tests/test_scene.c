@@ -160,6 +160,9 @@ static const struct {
      "random.preset: unknown preset \"sprak\" (spark_balls, plasma_ball, lightning)"},
     {WITH_SPARK("\"listener\":{\"position\":[0,0,0],\"up\":[0,2,0]},"),
      "listener.up: is parallel to forward"},
+    /* 0.03 degrees apart: the engine refuses under 0.06 (the parser once
+     * passed it, and the render failed at its first pose) */
+    {WITH_SPARK("\"listener\":{\"up\":[0,1,0.0005]},"), "listener.up: is parallel to forward"},
     {WITH_SPARK("\"listener\":{\"forward\":[0,0,0]},"),
      "listener.forward: must have a finite, non-zero length"},
     {WITH_SPARK("\"listener\":{\"position\":[0,0,0],\"path\":[]},"),

@@ -10,13 +10,12 @@
 #include "common/commands.h"
 #include "common/options.h"
 #include "common/temp_file.h"
+#include "common/wav_read.h"
 #include "envelope.h"
 #include "spectrogram.h"
 
 #define ENVELOPE_POINTS 2000
 #define P_REF_PA 20e-6
-/* Twice the highest rate of any audio interface or format in use (384 kHz) */
-#define ANALYZE_MAX_RATE_HZ 768000
 
 static const char about[] =
     "Prints the peak and RMS pressure of a WAV. A WAV that fulgur render wrote at\n"
@@ -27,13 +26,8 @@ static const char notes[] =
     "Exit: 0 done, 1 runtime error, 2 bad arguments or unreadable input.\n";
 
 typedef struct audio {
-    float *samples; /* interleaved */
-    size_t frames;
-    int channels;
-    double rate_hz;
-    double full_scale_pa; /* what a sample of 1.0 stands for */
-    bool calibrated;      /* the file said so (else 1 Pa) */
-    double peak_fs;       /* the largest |sample| as stored */
+    wav_audio wav;  /* its samples turned into pascals */
+    double peak_fs; /* the largest |sample| as stored */
 } audio;
 
 static int read_wav(const char *path, audio *a)
@@ -44,31 +38,24 @@ static int read_wav(const char *path, audio *a)
         fprintf(stderr, "fulgur: %s: %s\n", path, sf_strerror(NULL));
         return -1;
     }
-    /* the header's rate sizes the spectrogram's window: a rate no audio
-     * file has (2 147 483 647 Hz in 844 bytes took 8.3 GB) is refused */
-    if (info.samplerate < 1 || info.samplerate > ANALYZE_MAX_RATE_HZ) {
-        fprintf(stderr, "fulgur: %s: a sample rate of %d Hz, outside 1..%d\n", path,
-                info.samplerate, ANALYZE_MAX_RATE_HZ);
-        sf_close(f);
-        return -1;
-    }
-    a->frames = (size_t)info.frames;
-    a->channels = info.channels;
-    a->rate_hz = info.samplerate;
-    a->samples = malloc((a->frames ? a->frames : 1) * (size_t)a->channels * sizeof(float));
-    int ok = a->samples && sf_readf_float(f, a->samples, info.frames) == info.frames;
-    a->calibrated = calibration_read(f, &a->full_scale_pa);
+    char err[512];
+    int rc = wav_read(f, &info, path, &a->wav, err, sizeof err);
     sf_close(f);
-    if (!ok) {
-        fprintf(stderr, "fulgur: %s: cannot read %zu frames\n", path, a->frames);
-        free(a->samples);
+    if (rc != 0) {
+        fprintf(stderr, "fulgur: %s\n", err);
         return -1;
     }
+    const wav_audio *w = &a->wav;
+    if (w->declared_frames > w->frames)
+        fprintf(stderr,
+                "fulgur: warning: %s is truncated: %zu frames found, %llu declared; "
+                "analysing the %zu\n",
+                path, w->frames, (unsigned long long)w->declared_frames, w->frames);
     /* everything below is in pascals */
     a->peak_fs = 0;
-    for (size_t i = 0; i < a->frames * (size_t)a->channels; i++) {
-        a->peak_fs = fmax(a->peak_fs, fabs(a->samples[i]));
-        a->samples[i] = (float)(a->samples[i] * a->full_scale_pa);
+    for (size_t i = 0; i < w->frames * (size_t)w->channels; i++) {
+        a->peak_fs = fmax(a->peak_fs, fabs(w->samples[i]));
+        w->samples[i] = (float)(w->samples[i] * w->full_scale_pa);
     }
     return 0;
 }
@@ -77,12 +64,14 @@ typedef int (*writer)(FILE *out, const audio *a);
 
 static int write_envelope(FILE *out, const audio *a)
 {
-    return envelope_write(out, a->samples, a->frames, a->channels, a->rate_hz, ENVELOPE_POINTS);
+    const wav_audio *w = &a->wav;
+    return envelope_write(out, w->samples, w->frames, w->channels, w->rate_hz, ENVELOPE_POINTS);
 }
 
 static int write_spectrogram(FILE *out, const audio *a)
 {
-    return spectrogram_write(out, a->samples, a->frames, a->channels, 0, a->rate_hz);
+    const wav_audio *w = &a->wav;
+    return spectrogram_write(out, w->samples, w->frames, w->channels, 0, w->rate_hz);
 }
 
 static int write_output(const char *path, writer write, const audio *a)
@@ -108,18 +97,19 @@ static int write_output(const char *path, writer write, const audio *a)
 
 static void print_levels(const char *path, const audio *a)
 {
+    const wav_audio *w = &a->wav;
     double peak = 0, sum = 0;
-    size_t count = a->frames * (size_t)a->channels;
+    size_t count = w->frames * (size_t)w->channels;
     for (size_t i = 0; i < count; i++) {
-        peak = fmax(peak, fabs(a->samples[i]));
-        sum += (double)a->samples[i] * a->samples[i];
+        peak = fmax(peak, fabs(w->samples[i]));
+        sum += (double)w->samples[i] * w->samples[i];
     }
     double rms = count ? sqrt(sum / (double)count) : 0;
     printf("%s: %d ch, %.0f Hz, %.3f s, peak %.6g Pa (%.1f dB SPL), rms %.6g Pa; "
            "peak %+.1f dBFS, full scale = %.6g Pa (%s)\n",
-           path, a->channels, a->rate_hz, (double)a->frames / a->rate_hz, peak,
+           path, w->channels, w->rate_hz, (double)w->frames / w->rate_hz, peak,
            20 * log10(fmax(peak, 1e-12) / P_REF_PA), rms, calibration_dbfs(a->peak_fs),
-           a->full_scale_pa, a->calibrated ? "the file's calibration" : "no calibration: pascals");
+           w->full_scale_pa, w->calibrated ? "the file's calibration" : "no calibration: pascals");
 }
 
 int analyze_main(int argc, char **argv)
@@ -153,6 +143,6 @@ int analyze_main(int argc, char **argv)
     if ((wave && write_output(wave, write_envelope, &a) != 0) ||
         (spec && write_output(spec, write_spectrogram, &a) != 0))
         rc = CLI_RUNTIME;
-    free(a.samples);
+    free(a.wav.samples);
     return rc;
 }

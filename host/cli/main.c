@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "common/commands.h"
+#include "common/text_escape.h"
 #include "fulgur/version.h"
 #ifdef FULGUR_HAVE_GPU
 #include "gl_module.h"
@@ -53,7 +54,9 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < COMMAND_COUNT; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
             return commands[i].run(argc - 1, argv + 1);
-    fprintf(stderr, "fulgur: unknown command \"%s\"\n", argv[1]);
+    char name[256];
+    text_escape(name, sizeof name, argv[1]);
+    fprintf(stderr, "fulgur: unknown command \"%s\"\n", name);
     usage(stderr);
     return CLI_USAGE;
 }

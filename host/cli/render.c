@@ -4,6 +4,7 @@
 #include <math.h>
 #include <sndfile.h>
 #include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -109,6 +110,9 @@ typedef struct wav_sink {
     uint32_t capacity, buffered;
     float peak;
     uint64_t frames;
+    /* the frames of the first and the last sample above AUDIBLE_PA
+     * (UINT64_MAX, 0 while there is none) */
+    uint64_t first_audible, last_audible;
     progress *line;
 } wav_sink;
 
@@ -137,6 +141,32 @@ static fg_result flush_sink(wav_sink *w, char *err, size_t err_size)
     return FG_OK;
 }
 
+/* A sample above 20 uPa (0 dB SPL, the threshold of hearing at 1 kHz,
+ * ISO 226) is sound; a render whose sound spans less than
+ * MOSTLY_SILENT_SHARE of its length, when it lasts MOSTLY_SILENT_MIN_S or
+ * more, is mostly silence, and render says so (a far listener, a late
+ * discharge or a slow return stroke once wrote an hour of silence without
+ * a word). */
+#define AUDIBLE_PA 20e-6
+#define MOSTLY_SILENT_SHARE 0.1
+#define MOSTLY_SILENT_MIN_S 1.0
+
+/* Where the block's sound (its interleaved frames) starts and ends, in
+ * frames of the render. */
+static void note_audible(wav_sink *w, const float *block, uint32_t frames)
+{
+    const uint32_t channels = w->s->channels;
+    const float audible = (float)(AUDIBLE_PA * w->scale);
+    for (uint32_t f = 0; f < frames; f++)
+        for (uint32_t ch = 0; ch < channels; ch++)
+            if (fabsf(block[(size_t)f * channels + ch]) > audible) {
+                if (w->first_audible == UINT64_MAX)
+                    w->first_audible = w->frames + f;
+                w->last_audible = w->frames + f;
+                break;
+            }
+}
+
 static fg_result write_block(void *context, float *const *planes, uint32_t frames, char *err,
                              size_t err_size)
 {
@@ -146,12 +176,35 @@ static fg_result write_block(void *context, float *const *planes, uint32_t frame
     float *to = w->interleaved + (size_t)w->buffered * w->s->channels;
     audio_interleave(planes, w->s->channels, frames, w->scale, to);
     w->peak = audio_peak(to, (size_t)frames * w->s->channels, w->peak);
+    note_audible(w, to, frames);
     if (w->wav) /* the --normalize pass keeps nothing */
         w->buffered += frames;
     w->frames += frames;
     if (w->line) /* NULL: the --normalize pass */
         progress_update(w->line, (double)w->frames / w->s->sample_rate_hz, monotonic_now_ns());
     return FG_OK;
+}
+
+/* The warning of a render that is silent or mostly silence. */
+static void warn_silence(const char *out_path, const wav_sink *w)
+{
+    double rate = w->s->sample_rate_hz, length_s = (double)w->frames / rate;
+    if (length_s < MOSTLY_SILENT_MIN_S)
+        return;
+    if (w->first_audible == UINT64_MAX) {
+        fprintf(stderr, "fulgur: warning: %s is silent: no sample above %.0f uPa (0 dB SPL) in "
+                        "its %.3f s\n",
+                out_path, AUDIBLE_PA * 1e6, length_s);
+        return;
+    }
+    double sound_s = (double)(w->last_audible - w->first_audible + 1) / rate;
+    if (sound_s < MOSTLY_SILENT_SHARE * length_s)
+        fprintf(stderr,
+                "fulgur: warning: %s is mostly silence: its sound (above %.0f uPa, 0 dB SPL) "
+                "spans %.3f s (%.3f to %.3f s) of its %.3f s; a far listener, a late "
+                "discharge or a slow return stroke? (\"duration\" sets the length)\n",
+                out_path, AUDIBLE_PA * 1e6, sound_s, w->first_audible / rate,
+                (w->last_audible + 1) / rate, length_s);
 }
 
 /* What one file's render gives the manifest. */
@@ -166,7 +219,8 @@ typedef struct render_result {
  * these samples exactly, scaled. */
 static int measure_peak(const scene *s, double *peak, char *err, size_t err_size)
 {
-    wav_sink w = {.s = s, .scale = (float)s->gain, .capacity = s->block_frames};
+    wav_sink w = {.s = s, .scale = (float)s->gain, .capacity = s->block_frames,
+                  .first_audible = UINT64_MAX};
     w.interleaved = malloc((size_t)w.capacity * s->channels * sizeof(float));
     if (!w.interleaved) {
         snprintf(err, err_size, "out of memory");
@@ -251,7 +305,7 @@ static int render_file(const scene *s, const char *out_path, const render_level 
 {
     char err[512];
     uint64_t t0 = monotonic_now_ns();
-    wav_sink w = {.s = s, .path = out_path, .line = line};
+    wav_sink w = {.s = s, .path = out_path, .first_audible = UINT64_MAX, .line = line};
     if (level_scale(s, level, &w.scale, err, sizeof err) != 0) {
         if (pic->file.path)
             temp_file_abort(&pic->file);
@@ -324,6 +378,8 @@ static int render_file(const scene *s, const char *out_path, const render_level 
                 "fulgur: warning: %s peaks at %+.1f dBFS (%.4g Pa): a player clips it above "
                 "0 dBFS; --normalize -1 makes it listenable\n",
                 out_path, calibration_dbfs(w.peak), w.peak * full_scale_pa);
+    if (summary)
+        warn_silence(out_path, &w);
     *result = (render_result){rep.frames, w.peak, w.scale};
     return CLI_OK;
 }
@@ -500,7 +556,8 @@ static int parse_args(int argc, char **argv, render_args *a)
          .help = "stereo (default) or ambisonics:ORDER, ORDER 1..3 (AmbiX:\n"
                  "ACN order, SN3D; 4, 9 or 16 channels)"},
         {"--quiet", OPTION_FLAG, &a->quiet,
-         .help = "no summary line, no progress line, no warning of clipping"},
+         .help = "no summary line, no progress line, no warning of clipping or\n"
+                 "silence"},
         {"--png", OPTION_TEXT, &a->png, "OUT.png",
          .help = "also draw the discharges (docs/picture.md) from the scene's\n"
                  "\"camera\" into a PNG (needs gpu/: FULGUR_GPU); named as -o"},

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "options.h"
+#include "text_escape.h"
 
 #define USAGE_WIDTH 90   /* the usage line wraps here */
 #define HELP_COLUMN 30   /* where an option's help starts, at most */
@@ -100,9 +101,11 @@ void options_help(const command_line *cl, FILE *to)
 
 static options_result fail_va(const command_line *cl, const char *format, va_list ap)
 {
-    fprintf(stderr, "%s: ", cl->command);
-    vfprintf(stderr, format, ap);
-    fputc('\n', stderr);
+    /* the message echoes arguments: their control and invalid bytes are escaped */
+    char text[1024], safe[4 * sizeof text];
+    vsnprintf(text, sizeof text, format, ap);
+    text_escape(safe, sizeof safe, text);
+    fprintf(stderr, "%s: %s\n", cl->command, safe);
     usage_line(cl, stderr);
     return OPTIONS_BAD;
 }

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "common/text_escape.h"
 #include "json_read.h"
 
 void json_path_key(char *out, size_t size, const char *base, const char *key)
@@ -18,13 +19,18 @@ void json_path_index(char *out, size_t size, const char *base, size_t index)
 
 int json_fail(char *err, size_t err_size, const char *path, const char *fmt, ...)
 {
-    int n = snprintf(err, err_size, "%s: ", path[0] ? path : "scene");
-    if (n >= 0 && (size_t)n < err_size) {
+    /* the path and the values in the message come from the scene: their
+     * control and invalid bytes are escaped */
+    char text[1024];
+    int n = snprintf(text, sizeof text, "%s: ", path[0] ? path : "scene");
+    if (n >= 0 && (size_t)n < sizeof text) {
         va_list ap;
         va_start(ap, fmt);
-        vsnprintf(err + n, err_size - (size_t)n, fmt, ap);
+        vsnprintf(text + n, sizeof text - (size_t)n, fmt, ap);
         va_end(ap);
     }
+    if (err_size > 0)
+        text_escape(err, err_size, text);
     return -1;
 }
 

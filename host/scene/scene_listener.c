@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "scene_internal.h"
+#include "fg_math.h"
 #include "fg_vec3.h"
 
 static const char *const pose_keys[] = {"position", "forward", "up", NULL};
@@ -31,6 +32,20 @@ static double cosine(const double a[3], const double b[3])
     return dot(ua, ub);
 }
 
+/* The least sine of the angle between forward and up a pose may have:
+ * twice the engine's (fg_engine_set_listener refuses below 1e-3, about
+ * 0.06 degrees), so that every pose the render publishes is accepted. */
+#define MIN_UP_SINE 2e-3
+
+/* Sine of the angle between two non-zero vectors. */
+static double sine(const double a[3], const double b[3])
+{
+    fg_vec3 ua = fg_v3_load(a), ub = fg_v3_load(b);
+    ua = fg_v3_div(ua, fg_v3_len(ua));
+    ub = fg_v3_div(ub, fg_v3_len(ub));
+    return fg_v3_len(fg_v3_cross(ua, ub));
+}
+
 /* Reads position/forward/up of one pose and checks the directions. */
 static int parse_pose(const cJSON *obj, const char *path, scene_pose *p, char *err,
                       size_t err_size)
@@ -48,7 +63,7 @@ static int parse_pose(const cJSON *obj, const char *path, scene_pose *p, char *e
         json_path_key(key, sizeof key, path, "up");
         return json_fail(err, err_size, key, "must have a finite, non-zero length");
     }
-    if (fabs(cosine(p->forward, p->up)) > 1 - 1e-9) {
+    if (sine(p->forward, p->up) < MIN_UP_SINE) {
         json_path_key(key, sizeof key, path, "up");
         return json_fail(err, err_size, key, "is parallel to forward");
     }
@@ -69,6 +84,75 @@ static int check_turn(const double prev[3], const double next[3], const char *pa
     json_path_key(full, sizeof full, path, key);
     return json_fail(err, err_size, full,
                      "opposite to the previous pose's; add a pose in between");
+}
+
+static void lerp(const double a[3], const double b[3], double u, double out[3])
+{
+    for (int k = 0; k < 3; k++)
+        out[k] = a[k] + u * (b[k] - a[k]);
+}
+
+/* Forward and up (not normalised) at fraction u of the way from pose a to
+ * pose b: the lerp of the unit directions. */
+static void directions_between(const scene_pose *a, const scene_pose *b, double u,
+                               double forward[3], double up[3])
+{
+    double fa[3], fb[3], ua[3], ub[3];
+    normalise(a->forward, fa);
+    normalise(b->forward, fb);
+    normalise(a->up, ua);
+    normalise(b->up, ub);
+    lerp(fa, fb, u, forward);
+    lerp(ua, ub, u, up);
+}
+
+/* The sine between forward and up at fraction u of the way from a to b. */
+static double sine_between(const scene_pose *a, const scene_pose *b, double u)
+{
+    double f[3], up[3];
+    directions_between(a, b, u, f, up);
+    return sine(f, up);
+}
+
+/* Forward and up may not come near parallel anywhere between two poses
+ * (each pose alone is checked): the render publishes poses at times that
+ * depend on its block size, and one that fell where they are parallel was
+ * refused mid-render (block 256 failed at 0.5 s, block 24000 did not). The
+ * sine is smooth in u: the least of 256 samples, refined by a ternary
+ * search between its neighbours, finds its minimum. */
+#define TURN_SAMPLES 256
+
+static int check_between(const scene_pose *a, const scene_pose *b, const char *path, char *err,
+                         size_t err_size)
+{
+    int best = 0;
+    double least = INFINITY;
+    for (int i = 0; i <= TURN_SAMPLES; i++) {
+        double v = sine_between(a, b, (double)i / TURN_SAMPLES);
+        if (v < least) {
+            least = v;
+            best = i;
+        }
+    }
+    double lo = fmax(0, (best - 1.0) / TURN_SAMPLES), hi = fmin(1, (best + 1.0) / TURN_SAMPLES);
+    for (int k = 0; k < 60; k++) {
+        double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+        if (sine_between(a, b, m1) < sine_between(a, b, m2))
+            hi = m2;
+        else
+            lo = m1;
+    }
+    double u = 0.5 * (lo + hi);
+    least = fmin(least, sine_between(a, b, u));
+    if (least >= MIN_UP_SINE)
+        return 0;
+    char key[JSON_PATH_MAX];
+    json_path_key(key, sizeof key, path, "up");
+    return json_fail(err, err_size, key,
+                     "forward and up come within %.2f degrees of parallel at %.6g s, between "
+                     "the previous pose and this one; add a pose in between",
+                     asin(fmin(least, 1.0)) * 180 / FG_PI,
+                     a->time_s + u * (b->time_s - a->time_s));
 }
 
 static int parse_path(const cJSON *list, scene *s, char *err, size_t err_size)
@@ -108,7 +192,8 @@ static int parse_path(const cJSON *list, scene *s, char *err, size_t err_size)
             goto fail;
         }
         if (check_turn(poses[i - 1].forward, poses[i].forward, path, "forward", err, err_size) ||
-            check_turn(poses[i - 1].up, poses[i].up, path, "up", err, err_size))
+            check_turn(poses[i - 1].up, poses[i].up, path, "up", err, err_size) ||
+            check_between(&poses[i - 1], &poses[i], path, err, err_size))
             goto fail;
     }
     s->poses = poses;
@@ -142,12 +227,6 @@ int scene_parse_listener(const cJSON *item, scene *s, char *err, size_t err_size
     return 0;
 }
 
-static void lerp(const double a[3], const double b[3], double u, double out[3])
-{
-    for (int k = 0; k < 3; k++)
-        out[k] = a[k] + u * (b[k] - a[k]);
-}
-
 void scene_listener_at(const scene *s, double t_s, fg_listener *out)
 {
     const scene_pose *p = s->poses;
@@ -169,13 +248,8 @@ void scene_listener_at(const scene *s, double t_s, fg_listener *out)
     }
     const scene_pose *a = &p[lo], *b = &p[lo + 1];
     double span = b->time_s - a->time_s, u = (t_s - a->time_s) / span;
-    double fa[3], fb[3], ua[3], ub[3], f[3], up[3];
-    normalise(a->forward, fa);
-    normalise(b->forward, fb);
-    normalise(a->up, ua);
-    normalise(b->up, ub);
-    lerp(fa, fb, u, f);
-    lerp(ua, ub, u, up);
+    double f[3], up[3];
+    directions_between(a, b, u, f, up);
     lerp(a->position_m, b->position_m, u, out->position);
     normalise(f, out->forward);
     normalise(up, out->up);

@@ -49,6 +49,10 @@ static void fill_defaults(fg_fire_sound_config *c)
     b->sigma_cut_hz = def(b->sigma_cut_hz, 10.0 * k);
     b->blend_low_hz = def(b->blend_low_hz, 165.0 * k);
     b->blend_high_hz = def(b->blend_high_hz, 195.0 * k);
+    /* the windows in frames only from a rate check() accepts: a NaN or
+     * huge one would overflow the conversion to int (UBSan) */
+    if (!(c->sample_rate_hz >= MIN_RATE_HZ && c->sample_rate_hz <= MAX_RATE_HZ))
+        return;
     if (b->half_window_frames == 0)
         b->half_window_frames = (int)lround(500.0 * c->sample_rate_hz / 44100.0);
     /* an analysis window of 1 / sigma_cut: one that resolves g */
