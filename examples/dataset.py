@@ -31,7 +31,7 @@ COLUMNS = ["file", "scene", "preset", "distance_m", "humidity_pct", "variation",
 def discharge(preset, distance_m):
     """The one discharge of a row: the preset's own generator, distance_m
     ahead of the listener (+y)."""
-    if preset == "lightning":
+    if preset in ("lightning", "lightning_table1"):
         return {"time": 0.2, "preset": preset, "offset": [0, distance_m, 0],
                 "generator": {"type": "lightning"}}
     if preset == "spark_balls":

@@ -1,6 +1,6 @@
 /* fulgur.lv2's levels, through liblilv as a host loads it: at the default
- * controls every preset (spark balls, plasma ball, lightning, each at the
- * default distance) peaks below 0 dBFS for a note 60 at velocity 127, over
+ * controls every preset (spark balls, plasma ball, both lightning presets,
+ * each at the default distance) peaks below 0 dBFS for a note 60 at velocity 127, over
  * several seeds; every preset of the bundle (pset:Preset, read by lilv)
  * loads, sets what it says, and plays below 0 dBFS too. The output is
  * pascals times the gain control, so these are the engine's levels: a
@@ -16,6 +16,7 @@
 
 #include <cmocka.h>
 
+#include "fulgur/sound.h"
 #include "lilv_host.h"
 
 #define RATE_HZ 48000.0
@@ -54,8 +55,9 @@ static double seconds_for(float distance_m)
 static void test_default_controls(void **state)
 {
     (void)state;
-    static const char *const names[] = {"spark balls", "plasma ball", "lightning"};
-    for (int preset = 0; preset < 3; preset++) {
+    static const char *const names[] = {"spark balls", "plasma ball", "lightning",
+                                        "lightning (table 1)"};
+    for (int preset = 0; preset < FG_PRESET_COUNT; preset++) {
         float worst = 0;
         for (int seed = 1; seed <= SEEDS; seed++) {
             lv2_host *h = lv2_host_create(RATE_HZ);
@@ -63,12 +65,13 @@ static void test_default_controls(void **state)
             /* only the preset and the seed change: the rest at its default */
             assert_int_equal(lv2_host_set(h, "preset", (float)preset), 0);
             assert_int_equal(lv2_host_set(h, "seed", (float)seed), 0);
-            float peak = play(h, preset == 2 ? seconds_for(lv2_host_get(h, "distance")) : 2.0);
+            int bolt = preset == FG_PRESET_LIGHTNING || preset == FG_PRESET_LIGHTNING_TABLE1;
+            float peak = play(h, bolt ? seconds_for(lv2_host_get(h, "distance")) : 2.0);
             lv2_host_destroy(h);
             assert_true(peak > 0);
             worst = fmaxf(worst, peak);
         }
-        printf("default controls, %-11s: worst peak of %d seeds %+.1f dBFS\n", names[preset],
+        printf("default controls, %-19s: worst peak of %d seeds %+.1f dBFS\n", names[preset],
                SEEDS, 20 * log10f(worst));
         assert_true(worst < 1.0f);
     }
@@ -77,8 +80,9 @@ static void test_default_controls(void **state)
 static void test_bundle_presets(void **state)
 {
     (void)state;
-    static const char *const labels[] = {"Spark balls", "Plasma ball", "Lightning",
-                                         "Distant storm", "Close strike", "Tesla coil"};
+    static const char *const labels[] = {"Spark balls",   "Plasma ball",  "Lightning",
+                                         "Lightning (table 1)", "Distant storm",
+                                         "Close strike",  "Tesla coil"};
     const unsigned count = sizeof labels / sizeof labels[0];
     lv2_host *none = lv2_host_create(RATE_HZ);
     assert_non_null(none);
@@ -109,7 +113,7 @@ static void test_bundle_presets(void **state)
             assert_true(peak > 0);
             worst = fmaxf(worst, peak);
         }
-        printf("preset %-13s: worst peak of %d seeds %+.1f dBFS\n", labels[k], SEEDS / 2,
+        printf("preset %-19s: worst peak of %d seeds %+.1f dBFS\n", labels[k], SEEDS / 2,
                20 * log10f(worst));
         assert_true(worst < 1.0f);
     }

@@ -94,9 +94,10 @@ static const struct {
      "return_stroke_speed, ref_half_len, strokes, continuous, seed, offset, propagation, model, tree, "
      "generator, description)"},
     {"{\"discharges\":[{\"time\":0,\"preset\":\"sprak\"," TREE "}]}",
-     "discharges[0].preset: unknown preset \"sprak\" (spark_balls, plasma_ball, lightning)"},
+     "discharges[0].preset: unknown preset \"sprak\" "
+     "(spark_balls, plasma_ball, lightning, lightning_table1)"},
     {"{\"discharges\":[{\"time\":0," TREE "}]}",
-     "discharges[0].preset: required (spark_balls, plasma_ball, lightning)"},
+     "discharges[0].preset: required (spark_balls, plasma_ball, lightning, lightning_table1)"},
     {ONE_TREE("\"T0\":-1"), "discharges[0].T0: -1 is outside 1e-07..0.1"},
     {ONE_TREE("\"t0_jitter\":1"), "discharges[0].t0_jitter: 1 is outside [0, 1)"},
     {ONE_TREE("\"strokes\":33"), "discharges[0].strokes: 33 is outside 0..32"},
@@ -157,7 +158,8 @@ static const struct {
      "random.region: a discharge shifted by [0, 0, 10000000] is refused: random.tree.nodes[1]: "
      "node 1 has a coordinate of 1e+07 m, beyond +-1e+07 m"},
     {WITH_SPARK("\"random\":{\"rate_hz\":1,\"end\":3,\"preset\":\"sprak\"," TREE "},"),
-     "random.preset: unknown preset \"sprak\" (spark_balls, plasma_ball, lightning)"},
+     "random.preset: unknown preset \"sprak\" "
+     "(spark_balls, plasma_ball, lightning, lightning_table1)"},
     {WITH_SPARK("\"listener\":{\"position\":[0,0,0],\"up\":[0,2,0]},"),
      "listener.up: is parallel to forward"},
     /* 0.03 degrees apart: the engine refuses under 0.06 (the parser once

@@ -9,7 +9,7 @@ set logscale x
 set xrange [10:10000]
 set xlabel "frequency (Hz)"
 set ylabel "power (dB, arbitrary reference)"
-set title "A 5 km bolt heard at 1 km and at 8 km (T0 = 0.5 ms, storm atmosphere)"
+set title "A 5 km bolt heard at 1 km and at 8 km (the lightning preset, T0 = 2.5 ms, storm atmosphere)"
 plot "bench/results/validation_spectra.csv" every ::1 using 1:2 with lines lw 1.5 title "1 km", \
      "" every ::1 using 1:3 with lines lw 1.5 title "8 km"
 

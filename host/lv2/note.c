@@ -68,7 +68,7 @@ static fg_result grow(plugin *p, const work_request *rq, const fg_node **nodes)
     double at[3] = {head.position[0] + d * sin(az) * cos(el),
                     head.position[1] + d * cos(az) * cos(el), head.position[2] + d * sin(el)};
     fg_tree_clear(p->tree);
-    if (c->preset == FG_PRESET_LIGHTNING) {
+    if (c->preset == FG_PRESET_LIGHTNING || c->preset == FG_PRESET_LIGHTNING_TABLE1) {
         /* a cloud-to-ground bolt strikes the ground: elevation does not apply */
         fg_lightning_config lp = {.strike_m = {head.position[0] + d * sin(az),
                                                head.position[1] + d * cos(az)},

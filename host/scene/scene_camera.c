@@ -148,7 +148,9 @@ void scene_camera_framing(const scene *s, size_t index, double aspect, scene_cam
     out->up[2] = 1;
     out->fov_y_deg = DEFAULT_FOV_DEG;
     fg_vec3 side = listener_side(s, centre, fg_v3_len(fg_v3_load(half)));
-    if (s->discharges[index].preset == FG_PRESET_LIGHTNING && isfinite(lo[0]))
+    fg_preset preset = s->discharges[index].preset;
+    int sky = preset == FG_PRESET_LIGHTNING || preset == FG_PRESET_LIGHTNING_TABLE1;
+    if (sky && isfinite(lo[0]))
         frame_sky(s, lo, hi, side, aspect, out);
     else
         frame_lab(centre, half, side, aspect, out);

@@ -53,6 +53,7 @@ typedef struct fg_sound_config {
 } fg_sound_config;
 typedef enum fg_preset {
     FG_PRESET_SPARK_BALLS = 0, FG_PRESET_PLASMA_BALL = 1, FG_PRESET_LIGHTNING = 2,
+    FG_PRESET_LIGHTNING_TABLE1 = 3,
     FG_PRESET_COUNT
 } fg_preset;
 typedef struct fg_preset_scale { double path_m; double half_step_m; } fg_preset_scale;

@@ -46,9 +46,11 @@ def test_path_and_overrides_as_set(tmp_path):
     assert rendered.samples.tobytes() == data
     as_strings = fulgur.render(path, overrides=[f"{k}={json.dumps(v)}" for k, v in sets.items()])
     assert as_strings.samples.tobytes() == data
-    # the override changed the sound: 8 km, not 3 km, later and quieter
-    plain = fulgur.render(path).samples
-    assert rendered.report["peak"] < 0.8 * np.abs(plain).max()
+    # the override changed the sound: 8 km, not 3 km, later and quieter (in
+    # energy: the calibrated bolt's long waves keep single peaks high)
+    plain = fulgur.render(path).samples.astype(np.float64)
+    moved = rendered.samples.astype(np.float64)
+    assert (moved ** 2).sum() < 0.5 * (plain ** 2).sum()
 
 
 def test_report_and_write_wav(tmp_path):

@@ -37,11 +37,15 @@ typedef struct fg_sound_config {
 typedef enum fg_preset {
     FG_PRESET_SPARK_BALLS = 0, /* 2 cm gap, l = 1 mm, r0 = 5 cm, T0 = 30 us */
     FG_PRESET_PLASMA_BALL = 1, /* 20 cm filaments, l = 1 cm, r0 = 10 cm, T0 = 40 us */
-    FG_PRESET_LIGHTNING = 2,   /* 5 km bolt, l = 1.5 m, r0 = 10 m, T0 = 500 us */
+    /* 5 km bolt, l = 1.5 m, r0 = 10 m, T0 = 2.5 ms: table 1's bolt
+     * calibrated to measured thunder (docs/sound-model.md) */
+    FG_PRESET_LIGHTNING = 2,
+    FG_PRESET_LIGHTNING_TABLE1 = 3, /* the same bolt with table 1's T0 = 500 us */
     FG_PRESET_COUNT
 } fg_preset;
 
-/* The scale a preset's discharge is generated at (Matsuyama table 1). */
+/* The scale a preset's discharge is generated at (Matsuyama table 1; both
+ * lightning presets share it). */
 typedef struct fg_preset_scale {
     double path_m;       /* typical length of the discharge path */
     double half_step_m;  /* segment half-length l */
@@ -55,7 +59,8 @@ FG_API FG_NODISCARD fg_result fg_preset_sound(fg_preset preset, fg_sound_config 
  * Errors: FG_ERR_NULL out; FG_ERR_ARGUMENT unknown preset. */
 FG_API FG_NODISCARD fg_result fg_preset_get_scale(fg_preset preset, fg_preset_scale *out);
 
-/* The preset's name ("spark_balls", "plasma_ball", "lightning"), or NULL for
+/* The preset's name ("spark_balls", "plasma_ball", "lightning",
+ * "lightning_table1"), or NULL for
  * an unknown value; and the reverse lookup. [any-thread]
  * Errors (fg_preset_from_name): FG_ERR_NULL; FG_ERR_ARGUMENT unknown name. */
 FG_API const char *fg_preset_name(fg_preset preset);
