@@ -35,14 +35,16 @@ typedef struct note {
                             sound over the next note */
     double distance_m;   /* where the note map puts it */
     double extent_m;     /* how much nearer than that the tree may come, ears included */
+    double lead_s;       /* how long before its arrival a wave may begin: half
+                            the longest N-wave (lightning: T0 2.5 ms + 10 %) */
 } note;
 
 /* Earlier notes have fallen silent before each next one. */
 static const note script[] = {
-    {0.50, 0.60, 0, 60, 100, 0, 1, 10.0, 0.15},
-    {1.50, 1.60, 0, 48, 127, 90, 1, 20.0, 0.15},
-    {2.50, 3.50, 1, 72, 90, -45, 0, 5.0, 0.30},
-    {5.00, 5.20, 2, 60, 127, 30, 0, 10.0, 6.0},
+    {0.50, 0.60, 0, 60, 100, 0, 1, 10.0, 0.15, 0.0},
+    {1.50, 1.60, 0, 48, 127, 90, 1, 20.0, 0.15, 0.0},
+    {2.50, 3.50, 1, 72, 90, -45, 0, 5.0, 0.30, 0.0},
+    {5.00, 5.20, 2, 60, 127, 30, 0, 10.0, 6.0, 1.4e-3},
 };
 #define NOTES (sizeof script / sizeof script[0])
 
@@ -134,7 +136,8 @@ static void test_play(void **state)
         /* the tree is posted by the worker after the note's block, and
          * sounds from the start of the next one */
         size_t emit = (on / BLOCK + 1) * BLOCK;
-        size_t earliest = emit + (size_t)((n->distance_m - n->extent_m) / C_M_S * rate_hz);
+        size_t earliest =
+            emit + (size_t)(((n->distance_m - n->extent_m) / C_M_S - n->lead_s) * rate_hz);
         size_t latest = emit + (size_t)((n->distance_m + n->extent_m) / C_M_S * rate_hz) + 1;
         size_t first = first_sound(&r, on, latest + 1);
         fprintf(stderr,
