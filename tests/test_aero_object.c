@@ -257,6 +257,7 @@ static void arrival(void **state)
         fail_msg("first sample %ld, want %.2f +- 1", first, want);
     free(x);
     fg_engine_destroy(e);
+    fg_aero_texture_destroy(t);
 }
 
 /* The lift dipole seen at theta from its axis, r away: cos theta / r. */
