@@ -116,9 +116,7 @@ typedef struct fg_aero_object {
  * FG_AERO_OBJECT_MAX_SOURCES (given, or the default for a stick longer
  * than that many correlation lengths), a negative gain or duration, an
  * emit time negative and not FG_EMIT_NOW, a pose fg_aero_object_set_pose
- * refuses, a wind out of range, an engine in a layout other than
- * FG_LAYOUT_STEREO (an object's sources are not yet encoded by
- * direction); FG_ERR_POOL_FULL / FG_ERR_QUEUE_FULL as
+ * refuses, a wind out of range; FG_ERR_POOL_FULL / FG_ERR_QUEUE_FULL as
  * fg_engine_post. On any error nothing changes but the dropped_posts
  * counter for the last two. */
 FG_API FG_NODISCARD fg_result fg_aero_object_post(fg_engine *engine, const fg_aero_object *o,

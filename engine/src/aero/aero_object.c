@@ -108,11 +108,6 @@ fg_result fg_aero_object_post(fg_engine *e, const fg_aero_object *o, fg_voice_id
     fg_result r = check_object(o, t, &sources);
     if (r != FG_OK)
         return r;
-    /* its sources are not yet encoded by direction: stereo only */
-    fg_engine_config cfg;
-    fg_engine_get_config(e, &cfg);
-    if (cfg.layout != FG_LAYOUT_STEREO)
-        return FG_ERR_ARGUMENT;
     fg_aero_object stamped = *o;
     if (stamped.pose.time_s == 0)
         stamped.pose.time_s = fg_engine_time_s(e);

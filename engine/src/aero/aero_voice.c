@@ -11,7 +11,12 @@
  * steady speed). The block's samples interpolate tau, the position and the
  * projections linearly from the block's start, so the pitch follows the
  * Doppler rate d tau / dt and the texture is read at a fractional
- * position. Wait-free and bounded: a fixed number of steps per source and
+ * position. The layout (spatial/layout_internal.h) sends each ear's
+ * samples to its channel in stereo; in ambisonics the one ear at the
+ * head's centre is encoded from the direction the source is heard from,
+ * in the head's frame at the block's two ends, the gains interpolated
+ * between them, so a moving source or a turning head pans smoothly.
+ * Wait-free and bounded: a fixed number of steps per source and
  * ear, the per-block work bound, no allocation. */
 #include <math.h>
 #include <string.h>
@@ -19,9 +24,10 @@
 #include "aero_voice_internal.h"
 #include "fg_math.h"
 #include "fg_vec3.h"
+#include "spatial/layout_internal.h"
 
 #define RETARDED_STEPS 2
-#define WORK_SAMPLES 32 /* one work unit per this many samples of a source and ear */
+#define WORK_SAMPLES 32 /* one work unit per this many samples of a source, ear and output channel */
 
 static void absorb(const fg_listener *pose, uint64_t number, void *arg)
 {
@@ -33,13 +39,30 @@ static fg_vec3 source_at(const fg_head *h, double along_m)
     return fg_v3_add(fg_v3_load(h->position), fg_v3_scale(fg_v3_load(h->right), along_m));
 }
 
-/* The flow over source s at emission time tau and what ear q hears of it:
- * fills *out (tau, lookup, coef; position from prev, advanced by the
- * rate), returns the cross-flow speed. */
-static double evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, fg_vec3 q,
-                       double t_s, double tau_guess, const fg_aero_end *prev, double prev_rate,
-                       double c, fg_aero_end *out, double *rate_out)
+/* The unit direction from q towards o in the head frame of ears (x
+ * ahead, y left, z up); ahead when the two coincide. */
+static void head_direction(const fg_ears *ears, fg_vec3 q, fg_vec3 o, double dir[3])
 {
+    fg_vec3 from = fg_v3_sub(o, q);
+    double len = fg_v3_len(from);
+    if (!(len > 0.0)) {
+        dir[0] = 1.0, dir[1] = 0.0, dir[2] = 0.0;
+        return;
+    }
+    from = fg_v3_scale(from, 1.0 / len);
+    dir[0] = fg_v3_dot(from, fg_v3_load(ears->ahead));
+    dir[1] = -fg_v3_dot(from, fg_v3_load(ears->right));
+    dir[2] = fg_v3_dot(from, fg_v3_load(ears->above));
+}
+
+/* The flow over source s at emission time tau and what ear q of ears
+ * hears of it: fills *out (tau, lookup, coef, dir; position from prev,
+ * advanced by the rate), returns the cross-flow speed. */
+static double evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, const fg_ears *ears,
+                       unsigned ear, double t_s, double tau_guess, const fg_aero_end *prev,
+                       double prev_rate, double c, fg_aero_end *out, double *rate_out)
+{
+    const fg_vec3 q = fg_v3_load(ears->pos[ear]);
     fg_head h;
     double tau = tau_guess;
     for (int i = 0; i < RETARDED_STEPS; i++) {
@@ -49,6 +72,7 @@ static double evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, fg
     fg_trajectory_head(&v->path, tau, &h);
     fg_vec3 o = source_at(&h, s->along_m), d = fg_v3_sub(q, o);
     double r = fg_v3_len(d);
+    head_direction(ears, q, o, out->dir);
     fg_vec3 axis = fg_v3_load(h.right);
     fg_vec3 vel = fg_v3_add(fg_v3_load(h.velocity), fg_v3_scale(fg_v3_load(h.right_rate), s->along_m));
     double w[3];
@@ -115,8 +139,7 @@ static void adopt(void *voice, const fg_block_context *block)
         for (unsigned ch = 0; ch < block->ears->count; ch++) {
             fg_aero_end start = {.tau_s = t0, .lookup = {.weight = {1.0f, 0.0f}, .lift_sign = 1.0f}};
             double rate;
-            (void)evaluate(v, s, fg_v3_load(block->ears->pos[ch]), t0, t0, &start, 0.0, c,
-                           &s->end[ch], &rate);
+            (void)evaluate(v, s, block->ears, ch, t0, t0, &start, 0.0, c, &s->end[ch], &rate);
             s->end[ch].position = 0.0;
             s->rate[ch] = rate;
         }
@@ -147,13 +170,43 @@ static void mix_add(direction_mix *m, uint32_t index, float weight, const double
         (end ? m->a1 : m->a0)[k][c] += weight * coef[c];
 }
 
-/* Adds the samples between ends e0 and e1 of source s into its band's bus
- * `near` and, split by the voice's next_share, the next band's `far` (NULL
- * when unshared). */
-static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg_aero_end *e0,
-                 const fg_aero_end *e1, uint32_t frames, float *near, float *far)
+/* Where one source and ear's samples go: count output channels, each
+ * into its band's bus `near[c]` and, split by the voice's next_share, the
+ * next band's `far[c]` (NULL when unshared), with the layout's gain
+ * moving linearly from g0[c] at the block's start to g1[c] at its end. */
+typedef struct aero_outputs {
+    unsigned count;
+    float *near[FG_AMBISONIC_CHANNELS_MAX], *far[FG_AMBISONIC_CHANNELS_MAX];
+    double g0[FG_AMBISONIC_CHANNELS_MAX], g1[FG_AMBISONIC_CHANNELS_MAX];
+} aero_outputs;
+
+/* The outputs of ear ch between ends e0 and e1: in stereo its own channel
+ * with gain 1; in ambisonics every channel, with the harmonics of the
+ * directions at the two ends (a channel that is 0 at both is left out). */
+static void outputs_for(const fg_aero_voice *v, const fg_block_context *block, unsigned ch,
+                        const fg_aero_end *e0, const fg_aero_end *e1, aero_outputs *out)
 {
-    const double w_far = far ? v->next_share : 0.0, w_near = 1.0 - w_far;
+    double g0[FG_AMBISONIC_CHANNELS_MAX], g1[FG_AMBISONIC_CHANNELS_MAX];
+    unsigned first0, first1;
+    const unsigned count = fg_layout_gains(block->cfg, ch, e0->dir, &first0, g0);
+    (void)fg_layout_gains(block->cfg, ch, e1->dir, &first1, g1);
+    out->count = 0;
+    for (unsigned c = 0; c < count; c++) {
+        if (g0[c] == 0.0 && g1[c] == 0.0)
+            continue;
+        unsigned k = out->count++;
+        out->near[k] = fg_bus_pre(block->buses, v->bus, first0 + c);
+        out->far[k] = v->next_share > 0.0 ? fg_bus_pre(block->buses, v->bus + 1, first0 + c) : NULL;
+        out->g0[k] = g0[c];
+        out->g1[k] = g1[c];
+    }
+}
+
+/* Adds the samples between ends e0 and e1 of source s into out. */
+static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg_aero_end *e0,
+                 const fg_aero_end *e1, uint32_t frames, const aero_outputs *out)
+{
+    const double w_far = v->next_share, w_near = 1.0 - w_far;
     direction_mix m = {.count = 0};
     for (int j = 0; j < 2; j++) {
         mix_add(&m, e0->lookup.index[j], e0->lookup.weight[j], e0->coef, 0);
@@ -190,9 +243,12 @@ static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg
                 double sample = (1.0 - frac) * g[(size_t)i * comps + c] + frac * g[(size_t)i1 * comps + c];
                 p += a * sample;
             }
-            if (far)
-                far[n] += (float)(w_far * env * p);
-            near[n] += (float)(w_near * env * p);
+            for (unsigned c = 0; c < out->count; c++) {
+                double gain = out->g0[c] + (out->g1[c] - out->g0[c]) * u;
+                if (out->far[c])
+                    out->far[c][n] += (float)(gain * w_far * env * p);
+                out->near[c][n] += (float)(gain * w_near * env * p);
+            }
         }
     }
 }
@@ -226,9 +282,8 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
         for (unsigned ch = 0; ch < ears.count; ch++) {
             fg_aero_end e1;
             double rate;
-            double speed = evaluate(v, s, fg_v3_load(ears.pos[ch]), t1,
-                                    s->end[ch].tau_s + (t1 - t0), &s->end[ch], s->rate[ch], c,
-                                    &e1, &rate);
+            double speed = evaluate(v, s, &ears, ch, t1, s->end[ch].tau_s + (t1 - t0),
+                                    &s->end[ch], s->rate[ch], c, &e1, &rate);
             if (!end_finite(&e1)) {
                 fg_count(&block->counters->non_finite_voices, 1);
                 return true;
@@ -238,13 +293,14 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
                 if (speed * t->reference_m / t->viscosity_m2_s > FG_AERO_RE_MAX)
                     beyond = true;
                 fastest = fmax(fastest, speed);
-                if (*block->work_left >= units) {
-                    *block->work_left -= units;
-                    play(v, s, &s->end[ch], &e1, block->frames,
-                         fg_bus_pre(block->buses, v->bus, ch),
-                         v->next_share > 0.0 ? fg_bus_pre(block->buses, v->bus + 1, ch) : NULL);
+                aero_outputs out;
+                outputs_for(v, block, ch, &s->end[ch], &e1, &out);
+                const uint64_t cost = units * (out.count > 0 ? out.count : 1);
+                if (*block->work_left >= cost) {
+                    *block->work_left -= cost;
+                    play(v, s, &s->end[ch], &e1, block->frames, &out);
                 } else {
-                    fg_count(&block->counters->skipped_work, units);
+                    fg_count(&block->counters->skipped_work, cost);
                 }
             }
             if (!(e1.tau_s >= v->end_s + FG_AERO_FADE_S))

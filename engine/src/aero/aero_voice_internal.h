@@ -31,6 +31,9 @@ typedef struct fg_aero_end {
     fg_aero_lookup lookup;
     double coef[3];    /* per texture component: the pressure at the ear per
                           unit sample (scale, span, gain, projection, 1/(4 pi c r^2)) */
+    double dir[3];     /* unit, the head's frame at the hearing time (x ahead,
+                          y left, z up): where the wave comes from, for the
+                          layout's gains (spatial/layout_internal.h) */
 } fg_aero_end;
 
 typedef struct fg_aero_source_state {
