@@ -7,7 +7,9 @@
  * (x 1 / 0.9 approaching, x 1 / 1.1 receding, from the solved emission
  * times alone); the arrival r / c; the dipole's cos theta and 1 / r; the
  * number of sources (Dobashi et al.'s 50 cm rod of 1 cm: 16; their 70 cm
- * sword: 10); the real-time guard and a frame thread publishing poses;
+ * sword: 10); the real-time guard and a frame thread publishing poses
+ * and winds; the wind changed after the post (pitch, level, no click);
+ * aero objects in ambisonics (the direction decoded);
  * the refusals and the Reynolds range (silent below, counted above). */
 #include <math.h>
 #include <pthread.h>
@@ -377,6 +379,9 @@ static void *publish_main(void *arg)
                              .normal = {cos(a), 0, -sin(a)}};
         if (fg_aero_object_set_pose(p->e, p->id, &pose) != FG_OK)
             return NULL;
+        fg_aero_wind wind = {.velocity = {V0 * (1.0 + 0.1 * (k % 7)), 0, 0}};
+        if (fg_aero_object_set_wind(p->e, p->id, &wind) != FG_OK)
+            return NULL;
         fg_aero_report rep;
         if (fg_aero_object_get_report(p->e, p->id, &rep) != FG_OK)
             return NULL;
@@ -384,7 +389,7 @@ static void *publish_main(void *arg)
     return NULL;
 }
 
-/* A frame thread publishing poses as fast as it can while this thread
+/* A frame thread publishing poses and winds as fast as it can while this thread
  * renders (ThreadSanitizer watches this in build-tsan/). */
 static void frame_thread_publishes(void **state)
 {
@@ -407,6 +412,86 @@ static void frame_thread_publishes(void **state)
     }
     atomic_store(&p.done, true);
     assert_int_equal(pthread_join(th, NULL), 0);
+    fg_engine_destroy(e);
+    fg_aero_texture_destroy(t);
+}
+
+/* The largest step between neighbouring samples of x in [a, b) s. */
+static double largest_step(const float *x, double a, double b)
+{
+    double m = 0.0;
+    for (size_t n = (size_t)(a * FS) + 1; n < (size_t)(b * FS); n++)
+        m = fmax(m, fabs((double)x[n] - x[n - 1]));
+    return m;
+}
+
+/* The wind changed after the post (fg_aero_object_set_wind): a rod 3.43 m
+ * away (10 ms) in 10 m/s, the wind raised to 14 m/s at 0.4 s from the
+ * frame side between blocks. Before 0.4 s + r/c the tone is v0's; after
+ * the blend it is x1.4 in pitch and +8.77 dB (the v^3 law) within 0.1 %
+ * and 0.1 dB; no sample step in the blend is larger than the largest in
+ * the steady tone after it (no click), which is 1.4^4 times the one before; rendering allocates and locks
+ * nothing; bad winds are refused and change nothing. */
+static void wind_changes_after_post(void **state)
+{
+    (void)state;
+    fg_aero_texture *t = make_texture(LIFT_ONLY, FG_AERO_AEOLIAN, 0.01);
+    fg_engine *e = make_engine(1);
+    static const double at[3] = {0, -3.43, 0};
+    fg_aero_object o = rod(t, at, V0);
+    fg_voice_id id;
+    assert_int_equal(fg_aero_object_post(e, &o, &id), FG_OK);
+    const size_t frames = (size_t)(1.2 * FS) / 256 * 256;
+    float *x = calloc(frames, sizeof *x);
+    const fg_aero_wind faster = {.velocity = {1.4 * V0, 0, 0}};
+    for (size_t n = 0; n < frames; n += 256) {
+        if (n == 75 * 256) /* 0.4 s */
+            assert_int_equal(fg_aero_object_set_wind(e, id, &faster), FG_OK);
+        float *planes[1] = {x + n};
+        rt_guard_arm();
+        fg_result res = fg_engine_render(e, planes, 256);
+        rt_guard_counts counts = rt_guard_disarm();
+        assert_int_equal(res, FG_OK);
+        assert_int_equal(rt_guard_total(&counts), 0);
+    }
+    const double heard = 0.4 + 3.43 / C, blended = heard + FG_AERO_WIND_RAMP_S;
+    double f0 = frequency(x, 0.1, heard), f1 = frequency(x, blended + 0.01, 1.2);
+    double db = 20.0 * log10(rms(x, blended + 0.01, 1.2) / rms(x, 0.1, heard));
+    double before = largest_step(x, 0.1, heard), during = largest_step(x, heard - 0.005, blended),
+           after = largest_step(x, blended + 0.01, 1.2);
+    print_message("wind 10 -> 14 m/s: %.3f -> %.3f Hz (x%.5f), %+.3f dB; largest step %.4g before, "
+                  "%.4g in the blend, %.4g after (x%.4f)\n", f0, f1, f1 / f0, db, before, during,
+                  after, after / before);
+    if (fabs(f0 / F_TEX - 1.0) > 1e-3 || fabs(f1 / f0 / 1.4 - 1.0) > 1e-3)
+        fail_msg("pitch %.4f -> %.4f Hz, want %.1f -> %.1f", f0, f1, F_TEX, 1.4 * F_TEX);
+    if (fabs(db - 60.0 * log10(1.4)) > 0.1)
+        fail_msg("level %+.3f dB, want %+.3f", db, 60.0 * log10(1.4));
+    assert_true(during <= after);
+    /* a step of a tone is its amplitude times 2 pi f / fs: x 1.4^3 x 1.4 */
+    if (fabs(after / before / pow(1.4, 4) - 1.0) > 0.02)
+        fail_msg("largest step x%.4f after the blend, want x%.4f", after / before, pow(1.4, 4));
+
+    /* refused, nothing published: the tone stays at 14 m/s */
+    fg_aero_wind bad = faster;
+    bad.velocity[1] = NAN;
+    assert_int_equal(fg_aero_object_set_wind(e, id, &bad), FG_ERR_NOT_FINITE);
+    bad = faster, bad.velocity[0] = 120.0;
+    assert_int_equal(fg_aero_object_set_wind(e, id, &bad), FG_ERR_ARGUMENT);
+    bad = faster, bad.gust = -0.5;
+    assert_int_equal(fg_aero_object_set_wind(e, id, &bad), FG_ERR_ARGUMENT);
+    bad = faster, bad.gust_period_s = 0.01;
+    assert_int_equal(fg_aero_object_set_wind(e, id, &bad), FG_ERR_ARGUMENT);
+    assert_int_equal(fg_aero_object_set_wind(NULL, id, &faster), FG_ERR_NULL);
+    assert_int_equal(fg_aero_object_set_wind(e, id, NULL), FG_ERR_NULL);
+    assert_int_equal(fg_aero_object_set_wind(e, 12345, &faster), FG_ERR_NOT_FOUND);
+    for (size_t n = 0; n < frames; n += 256) {
+        float *planes[1] = {x + n};
+        assert_int_equal(fg_engine_render(e, planes, 256), FG_OK);
+    }
+    double f2 = frequency(x, 0.1, 1.2);
+    if (fabs(f2 / f1 - 1.0) > 1e-3)
+        fail_msg("after the refusals %.4f Hz, want %.4f", f2, f1);
+    free(x);
     fg_engine_destroy(e);
     fg_aero_texture_destroy(t);
 }
@@ -667,6 +752,7 @@ int main(void)
         cmocka_unit_test(source_count),
         cmocka_unit_test(real_time_guard_and_stop),
         cmocka_unit_test(frame_thread_publishes),
+        cmocka_unit_test(wind_changes_after_post),
         cmocka_unit_test(ambisonics_direction),
         cmocka_unit_test(refuses_bad_input),
         cmocka_unit_test(reynolds_range),

@@ -5,7 +5,7 @@
  *   sim thread                          frame thread (any but audio)
  *   fg_aero_object_post(e, &object) --> fg_aero_object_set_pose(e, id, &pose)
  *   fg_engine_stop(e, id)                  each frame, timestamped
- *   fg_engine_collect(e)
+ *   fg_engine_collect(e)                fg_aero_object_set_wind(e, id, &wind)
  *
  * The object is split into sources one correlation length apart (3 D, D
  * the texture's reference_m); each source l at o_l moves at
@@ -139,6 +139,26 @@ FG_API FG_NODISCARD fg_result fg_aero_object_post(fg_engine *engine, const fg_ae
  * negative time. Nothing is published on an error. */
 FG_API FG_NODISCARD fg_result fg_aero_object_set_pose(fg_engine *engine, fg_voice_id id,
                                                       const fg_aero_pose *pose);
+
+/* How long a changed wind takes to blend from the old one, s. */
+#define FG_AERO_WIND_RAMP_S 0.02
+
+/* Changes object id's wind (copied): the newest wind wins. The audio
+ * thread takes it at the start of its next block, the moment the new wind
+ * starts at the object (each ear hears it r / c later), and blends the old
+ * wind into it over FG_AERO_WIND_RAMP_S (a C1 smoothstep: speed, pitch
+ * and level change smoothly, click-free). A wind published while a blend
+ * is still under way at some source waits for it to end (at most
+ * FG_AERO_WIND_RAMP_S plus a block; a newer one replaces it). Lock-free
+ * for the audio thread. [any-thread] but not the audio thread, one writer
+ * per object (the same as fg_aero_object_set_pose's), from the post until
+ * the voice is collected.
+ * Errors: FG_ERR_NULL; FG_ERR_NOT_FOUND id is not a live aero object;
+ * FG_ERR_NOT_FINITE a NaN or infinite field; FG_ERR_ARGUMENT a speed above
+ * FG_AERO_MAX_SPEED_M_S, a gust outside [0, 1], a gust period neither 0
+ * nor in [0.05, 600] s. Nothing is published on an error. */
+FG_API FG_NODISCARD fg_result fg_aero_object_set_wind(fg_engine *engine, fg_voice_id id,
+                                                      const fg_aero_wind *wind);
 
 /* What an object's voice has done. */
 typedef struct fg_aero_report {

@@ -130,7 +130,7 @@ fg_result fg_aero_prepare(const fg_source_ops *ops, void *voice, const void *des
     v->texture = o->texture;
     v->tex = t;
     v->body = o->body;
-    v->wind = o->wind;
+    fg_aero_wind_box_init(v, &o->wind);
     v->gain = o->gain > 0.0 ? o->gain : 1.0;
     v->emit_s = o->emit_time_s;
     v->end_s = INFINITY;
@@ -178,6 +178,20 @@ fg_result fg_aero_object_set_pose(fg_engine *e, fg_voice_id id, const fg_aero_po
     fg_listener record;
     fg_aero_pose_record(&stamped, &record);
     (void)fg_pose_queue_push(&v->queue, &record);
+    return FG_OK;
+}
+
+fg_result fg_aero_object_set_wind(fg_engine *e, fg_voice_id id, const fg_aero_wind *wind)
+{
+    if (!e || !wind)
+        return FG_ERR_NULL;
+    fg_aero_voice *v = fg_engine_voice_state(e, id, &fg_aero_kind);
+    if (!v)
+        return FG_ERR_NOT_FOUND;
+    fg_result r = check_wind(wind);
+    if (r != FG_OK)
+        return r;
+    fg_aero_wind_box_push(v, wind);
     return FG_OK;
 }
 

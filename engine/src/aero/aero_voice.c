@@ -76,7 +76,7 @@ static double evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, co
     fg_vec3 axis = fg_v3_load(h.right);
     fg_vec3 vel = fg_v3_add(fg_v3_load(h.velocity), fg_v3_scale(fg_v3_load(h.right_rate), s->along_m));
     double w[3];
-    fg_aero_wind_at(&v->wind, tau, w);
+    fg_aero_voice_wind_at(v, tau, w);
     fg_vec3 u = fg_v3_sub(fg_v3_load(w), vel); /* the air, as the source sees it */
     const fg_aero_texture_desc *t = v->tex;
     if (t->dims == 2 || t->shape == FG_AERO_CLUB)
@@ -266,6 +266,11 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
     const double t0 = block->start_frame / fs, t1 = (block->start_frame + block->frames) / fs;
     fg_pose_queue_drain(&v->queue, &v->poses_seen, absorb, &v->path);
     fg_trajectory_forget(&v->path, t0);
+    double oldest_tau = INFINITY;
+    for (uint32_t i = 0; i < v->source_count; i++)
+        for (unsigned ch = 0; ch < block->ears->count; ch++)
+            oldest_tau = fmin(oldest_tau, v->source[i].end[ch].tau_s);
+    fg_aero_voice_take_wind(v, oldest_tau, t0);
     if (stopping && !(v->end_s < INFINITY))
         v->end_s = fmax(t0, v->emit_s);
     fg_head head;

@@ -44,14 +44,34 @@ typedef struct fg_aero_source_state {
     double rate[2];     /* texture frames per second of emission time there */
 } fg_aero_source_state;
 
+/* The frame thread's latest wind for the audio thread: a triple buffer.
+ * The one writer fills slot[back] and swaps it for the middle slot, marked
+ * fresh; the audio thread, when the middle is fresh, swaps it for its
+ * front slot. Both swaps are one atomic exchange (acquire-release), so the
+ * slots' contents pass with them: wait-free, no torn value, latest wins. */
+typedef struct fg_aero_wind_box {
+    fg_aero_wind slot[3];
+    atomic_uint middle;        /* the middle slot's index, | FG_AERO_WIND_FRESH unread */
+    unsigned back;             /* the writer's */
+    unsigned front;            /* the audio thread's */
+} fg_aero_wind_box;
+
+#define FG_AERO_WIND_FRESH 4u
+
 typedef struct fg_aero_voice {
     fg_pose_queue queue;       /* the frame thread's poses */
+    fg_aero_wind_box wind_box; /* the frame thread's winds */
     fg_trajectory path;        /* audio thread: the poses absorbed */
     uint64_t poses_seen;
     const fg_aero_texture *texture;
     const fg_aero_texture_desc *tex;
     fg_aero_body body;
-    fg_aero_wind wind;
+    /* audio thread: the wind is wind_from until emission time wind_change_s,
+     * then blends into wind over FG_AERO_WIND_RAMP_S (aero_wind.c); a newer
+     * wind waits in wind_next until every source has passed the blend */
+    fg_aero_wind wind_from, wind, wind_next;
+    double wind_change_s;
+    bool wind_waiting;
     double gain;
     unsigned bus;              /* its distance band (or the dry bus) */
     double next_share;         /* the share of the next band (ISO 9613-1's split) */
@@ -78,6 +98,20 @@ void fg_aero_pose_record(const fg_aero_pose *pose, fg_listener *out);
 
 /* The wind at time t_s: its velocity times (1 + gust n(t)). */
 void fg_aero_wind_at(const fg_aero_wind *w, double t_s, double out[3]);
+
+/* The voice's wind at emission time t_s, through its blend. [audio-thread] */
+void fg_aero_voice_wind_at(const fg_aero_voice *v, double t_s, double out[3]);
+
+/* Sets the voice's winds to w, nothing waiting or blending. [sim-thread] */
+void fg_aero_wind_box_init(fg_aero_voice *v, const fg_aero_wind *w);
+
+/* Publishes w (checked) for the voice. [any-thread but audio, one writer] */
+void fg_aero_wind_box_push(fg_aero_voice *v, const fg_aero_wind *w);
+
+/* Takes the newest published wind and, once every source's emission time
+ * (oldest_tau_s the earliest) has passed the running blend, starts
+ * blending into it at now_s. [audio-thread] */
+void fg_aero_voice_take_wind(fg_aero_voice *v, double oldest_tau_s, double now_s);
 
 /* The sources a stick of length_m splits into with texture reference d_m
  * (the correlation length 3 d_m), at least 1. */
