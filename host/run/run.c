@@ -34,6 +34,23 @@ static int open_live(run_ctx *run, int *rc, char *err, size_t err_size)
     return 0;
 }
 
+/* Posts every aero object (each sounds from its own emit time), before
+ * the threads start: the sim thread posts only discharges after this. */
+static int post_aero_objects(run_ctx *run, int *rc, char *err, size_t err_size)
+{
+    for (size_t i = 0; i < run->s->aero_count; i++) {
+        fg_result r = fg_aero_object_post(run->engine, &run->s->aeros[i].post, &run->aero_ids[i]);
+        if (r != FG_OK) {
+            snprintf(err, err_size, "aero_objects[%zu]: the engine refused it: %s%s", i,
+                     fg_result_str(r),
+                     r == FG_ERR_POOL_FULL || r == FG_ERR_QUEUE_FULL ? " (try --voices)" : "");
+            *rc = r == FG_ERR_POOL_FULL || r == FG_ERR_QUEUE_FULL ? CLI_RUNTIME : CLI_USAGE;
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* Allocates what the threads use; the engine last. */
 static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
 {
@@ -54,6 +71,8 @@ static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
     run->post_event_s = calloc(n, sizeof *run->post_event_s);
     run->adopt_frame = calloc(n, sizeof *run->adopt_frame);
     run->adopt_ns = calloc(n, sizeof *run->adopt_ns);
+    run->aero_ids = calloc(s->aero_count + 1, sizeof *run->aero_ids);
+    run->aero_done = calloc(s->aero_count + 1, sizeof *run->aero_done);
     for (uint32_t ch = 0; ch < s->channels; ch++)
         run->planes[ch] = calloc(run->block_frames, sizeof(float));
     /* callback and post call to 1 us up to 50 ms; jitter to 10 us up to 1 s */
@@ -61,7 +80,7 @@ static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
                 run_hist_init(&run->post_call, 1e-6, 50000) |
                 run_hist_init(&run->jitter, 1e-5, 100000);
     if (!run->order || !run->post_frame || !run->post_ns || !run->post_event_s ||
-        !run->adopt_frame || !run->adopt_ns || !run->planes[0] ||
+        !run->adopt_frame || !run->adopt_ns || !run->aero_ids || !run->aero_done || !run->planes[0] ||
         (s->channels == 2 && !run->planes[1]) || hists) {
         snprintf(err, err_size, "out of memory");
         return -1;
@@ -93,7 +112,7 @@ static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
         snprintf(err, err_size, "engine: %s", fg_result_str(r));
         return -1;
     }
-    return 0;
+    return post_aero_objects(run, rc, err, err_size);
 }
 
 static void tear_down(run_ctx *run)
@@ -108,6 +127,8 @@ static void tear_down(run_ctx *run)
     free(run->post_event_s);
     free(run->adopt_frame);
     free(run->adopt_ns);
+    free(run->aero_ids);
+    free(run->aero_done);
     free(run->planes[0]);
     free(run->planes[1]);
     run_hist_deinit(&run->callback);
@@ -210,6 +231,10 @@ static int run_scene(run_ctx *run)
     if (ok && run->sim_error[0]) {
         snprintf(err, sizeof err, "%s", run->sim_error);
         fail_rc = run->sim_error_in_scene ? CLI_USAGE : CLI_RUNTIME;
+        ok = 0;
+    } else if (ok && run->frame_error[0]) {
+        snprintf(err, sizeof err, "%s", run->frame_error);
+        fail_rc = CLI_USAGE; /* the scene's motion */
         ok = 0;
     } else if (ok && run->render_result != FG_OK) {
         snprintf(err, sizeof err, "render at frame %llu: %s",

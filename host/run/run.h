@@ -1,7 +1,8 @@
 /* fulgur run: the engine embedded the way a VR application embeds it, with
  * three threads sharing one run_ctx.
  *
- *   frame thread  run_frame.c  the listener at 90 Hz: fg_engine_set_listener
+ *   frame thread  run_frame.c  the listener at 90 Hz: fg_engine_set_listener,
+ *                              and each aero object's pose from its motion
  *   sim thread    run_sim.c    builds trees, fg_engine_post at their time,
  *                              retries a full pool/queue, fg_engine_collect
  *   audio thread  run_audio.c  a driver pulling fg_engine_render per block
@@ -18,6 +19,10 @@
  *              posted everything due at the engine clock and the frame
  *              thread has set the pose of the latest 90 Hz tick on that
  *              clock. Equal scene and options give equal samples.
+ *
+ * Aero objects are posted by run.c before the threads start (each sounds
+ * from its own emit time), so the first adoptions are theirs and the frame
+ * thread knows their ids from its first tick.
  *
  * Ownership: everything in run_ctx is allocated by run.c before the
  * threads start and freed after they are joined. Each measurement array is
@@ -115,7 +120,13 @@ typedef struct run_ctx {
     fg_result render_result;  /* a failed render ends the run */
     char audio_error[512];    /* a failed driver write ends the run */
 
+    /* set before the threads start */
+    fg_voice_id *aero_ids;    /* per aero object, posted in scene order */
+
     /* frame thread's */
+    bool *aero_done;          /* collected: its poses are no longer set */
+    uint64_t aero_poses_set;
+    char frame_error[512];    /* an aero pose refused ends the run */
     uint64_t frames_set;
     run_hist jitter;          /* wake-up minus deadline, paced only */
 } run_ctx;

@@ -8,14 +8,17 @@
  * inputs (run_gate.h), then goes to the driver. */
 #include "run_gate.h"
 
-/* Notes the voices adopted by the block that started at frames at wall
- * time t_ns: adoption is in post order (one ring), so the k-th adopted is
- * the k-th posted. */
+/* Notes the discharges adopted by the block that started at frames at
+ * wall time t_ns: adoption is in post order (one ring), the aero objects
+ * (posted before the threads started) first, so the k-th discharge
+ * adopted is the k-th posted. */
 static void note_adoptions(run_ctx *run, uint64_t frames, uint64_t t_ns)
 {
     fg_engine_report stats;
     fg_engine_get_report(run->engine, &stats);
-    for (; run->adopted < stats.adopted; run->adopted++) {
+    const uint64_t aeros = run->s->aero_count;
+    uint64_t discharges = stats.adopted > aeros ? stats.adopted - aeros : 0;
+    for (; run->adopted < discharges; run->adopted++) {
         if (run->adopted >= run->s->discharge_count)
             continue; /* cannot happen: one post per discharge */
         run->adopt_frame[run->adopted] = frames;

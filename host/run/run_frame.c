@@ -4,9 +4,13 @@
  * head for the frame's display time: the scene's pose path, or for a scene
  * with one fixed pose a small sway (a few centimetres and degrees, seeded,
  * a smooth function of time so lock-step runs repeat exactly). The engine
- * joins the poses into a continuous path (fg_engine_set_listener). */
+ * joins the poses into a continuous path (fg_engine_set_listener). The
+ * same tick publishes every aero object's pose at that time, sampled from
+ * its motion (fg_aero_object_set_pose), as render does. */
 #include <math.h>
 #include <string.h>
+
+#include <stdio.h>
 
 #include "run_gate.h"
 #include "fg_rng.h"
@@ -63,6 +67,30 @@ static void set_pose(run_ctx *run, const sway *w, double t)
         run->frames_set++;
 }
 
+/* Publishes each live aero object's pose at t. Returns false (the message
+ * in run->frame_error) when the engine refused one. */
+static bool set_aero_poses(run_ctx *run, double t)
+{
+    for (size_t i = 0; i < run->s->aero_count; i++) {
+        if (run->aero_done[i])
+            continue;
+        fg_aero_pose pose;
+        scene_aero_pose_at(&run->s->aeros[i], t, &pose);
+        fg_result r = fg_aero_object_set_pose(run->engine, run->aero_ids[i], &pose);
+        if (r == FG_OK) {
+            run->aero_poses_set++;
+        } else if (r == FG_ERR_NOT_FOUND) {
+            run->aero_done[i] = true; /* finished and collected */
+        } else {
+            snprintf(run->frame_error, sizeof run->frame_error,
+                     "aero_objects[%zu]: its pose at %.6f s: %s (faster than %g m/s?)", i, t,
+                     fg_result_str(r), FG_AERO_MAX_SPEED_M_S);
+            return false;
+        }
+    }
+    return true;
+}
+
 void *run_frame_thread(void *arg)
 {
     run_ctx *run = arg;
@@ -80,10 +108,18 @@ void *run_frame_thread(void *arg)
             while (!run_stopping(run) && run_tick_at(run, seen = fg_engine_frames(run->engine)) < tick)
                 run_wait_engine_past(run, seen);
         }
-        if (tick == 0)
+        if (tick == 0) {
             set_pose(run, &w, 0.0); /* where the path starts, before the first lead */
-        set_pose(run, &w, (double)(tick + RUN_POSE_LEAD_TICKS) * period_s);
+            if (!set_aero_poses(run, 0.0))
+                break;
+        }
+        double t = (double)(tick + RUN_POSE_LEAD_TICKS) * period_s;
+        set_pose(run, &w, t);
+        if (!set_aero_poses(run, t))
+            break;
         run_publish_tick(run, tick);
     }
+    if (run->frame_error[0])
+        run_stop(run);
     return NULL;
 }

@@ -141,15 +141,20 @@ char *run_report_json(const run_ctx *run, double wall_s)
         hist_spread(fl, "jitter_ms", &run->jitter, 1e3);
     else
         cJSON_AddNullToObject(fl, "jitter_ms"); /* ticks follow the engine clock */
+    /* the aero objects were posted (and adopted) first, all of them */
+    const double aeros = (double)run->s->aero_count;
     cJSON *d = cJSON_AddObjectToObject(root, "discharges");
     cJSON_AddNumberToObject(d, "scheduled", (double)run->s->discharge_count);
-    cJSON_AddNumberToObject(d, "posted", (double)st.posted);
+    cJSON_AddNumberToObject(d, "posted", (double)st.posted - aeros);
     cJSON_AddNumberToObject(d, "refused_posts", (double)run->refused);
     cJSON_AddNumberToObject(d, "dropped", (double)run->dropped);
-    cJSON_AddNumberToObject(d, "adopted", (double)st.adopted);
+    cJSON_AddNumberToObject(d, "adopted", (double)run->adopted);
     cJSON_AddNumberToObject(d, "rendered", (double)st.finished);
     cJSON_AddNumberToObject(d, "collected", (double)st.collected);
     cJSON_AddNumberToObject(d, "skipped_repeats", (double)st.skipped_repeats);
+    cJSON *ao = cJSON_AddObjectToObject(root, "aero_objects");
+    cJSON_AddNumberToObject(ao, "posted", aeros);
+    cJSON_AddNumberToObject(ao, "poses_set", (double)run->aero_poses_set);
     cJSON *e = cJSON_AddObjectToObject(root, "engine");
     cJSON_AddNumberToObject(e, "blocks", (double)st.blocks);
     cJSON_AddNumberToObject(e, "blocks_over_budget", (double)st.blocks_over_budget);
