@@ -42,7 +42,7 @@ awk -v a="$(dominant "$tmp/render.dat")" -v b="$(dominant "$tmp/run.dat")" \
     exit !(a == b && db > -1 && db < 1)}' || { echo "wind_wires: run and render disagree"; fail=1; }
 # 3 objects, a pose each per 90 Hz tick of the 2 s (180, and the few
 # ticks the frame thread runs ahead and at the start)
-posted=$(grep -A2 '"aero_objects"' "$tmp/report.json" | sed -n 's/.*"posted":[[:space:]]*\([0-9]*\).*/\1/p')
+posted=$(grep -A2 '"aero_objects"' "$tmp/report.json" | sed -n 's/.*"count":[[:space:]]*\([0-9]*\).*/\1/p')
 poses=$(grep -A2 '"aero_objects"' "$tmp/report.json" | sed -n 's/.*"poses_set":[[:space:]]*\([0-9]*\).*/\1/p')
 awk -v n="${posted:-0}" -v p="${poses:-0}" 'BEGIN {printf "wires: %d objects posted, %d poses set\n", n, p;
     exit !(n == 3 && p >= 3 * 181 && p <= 3 * 185)}' ||

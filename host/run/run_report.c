@@ -153,7 +153,7 @@ char *run_report_json(const run_ctx *run, double wall_s)
     cJSON_AddNumberToObject(d, "collected", (double)st.collected);
     cJSON_AddNumberToObject(d, "skipped_repeats", (double)st.skipped_repeats);
     cJSON *ao = cJSON_AddObjectToObject(root, "aero_objects");
-    cJSON_AddNumberToObject(ao, "posted", aeros);
+    cJSON_AddNumberToObject(ao, "count", aeros);
     cJSON_AddNumberToObject(ao, "poses_set", (double)run->aero_poses_set);
     cJSON *e = cJSON_AddObjectToObject(root, "engine");
     cJSON_AddNumberToObject(e, "blocks", (double)st.blocks);
