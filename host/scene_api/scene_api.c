@@ -6,6 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <errno.h>
+
+#include "common/aero_texture_file.h"
 #include "common/audio_file.h"
 #include "common/temp_file.h"
 #include "fg_array.h"
@@ -240,4 +243,22 @@ fg_result fgs_wav_write(const char *path, const float *samples, uint64_t frames,
         return FG_ERR_IO;
     }
     return temp_file_commit(&out, msg, msg_size) == 0 ? FG_OK : FG_ERR_IO;
+}
+
+fg_result fgs_aero_texture_load(const char *path, fg_aero_texture **out, char *err,
+                                size_t err_size)
+{
+    message m;
+    message_init(&m, err, err_size);
+    if (!path || !out) {
+        snprintf(m.text, m.size, "%s", fg_result_str(FG_ERR_NULL));
+        return FG_ERR_NULL;
+    }
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(m.text, m.size, "%s: cannot open: %s", path, strerror(errno));
+        return FG_ERR_IO;
+    }
+    fclose(f);
+    return aero_texture_load(path, out, m.text, m.size) == 0 ? FG_OK : FG_ERR_ARGUMENT;
 }

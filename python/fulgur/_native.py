@@ -120,6 +120,52 @@ void fg_engine_get_report(const fg_engine *engine, fg_engine_report *out);
 uint64_t fg_engine_frames(const fg_engine *engine);
 double fg_engine_time_s(const fg_engine *engine);
 
+/* aero.h */
+typedef enum fg_aero_shape {
+    FG_AERO_CIRCLE = 1, FG_AERO_RECTANGLE = 2, FG_AERO_POLYGON = 3, FG_AERO_SPHERE = 4,
+    FG_AERO_CLUB = 5
+} fg_aero_shape;
+typedef enum fg_aero_tone { FG_AERO_AEOLIAN = 0, FG_AERO_CAVITY = 1 } fg_aero_tone;
+typedef struct fg_aero_direction {
+    double angle_rad; double frontal_m; double frequency_hz; double strouhal;
+    double lift_amplitude; double drag_mean; double transient_s; uint32_t periods;
+    uint32_t frames; const float *samples;
+} fg_aero_direction;
+typedef struct fg_aero_source { double position_m; double span_m; } fg_aero_source;
+typedef struct fg_aero_texture_desc {
+    fg_aero_shape shape; fg_aero_tone tone; uint32_t dims; uint32_t components;
+    double length_m; double height_m; double diameter_m[2]; uint32_t polygon_vertices;
+    const double *polygon_xy; double reference_m; double speed_m_s; double viscosity_m2_s;
+    double density_kg_m3; double reynolds; double sample_rate_hz; double cells_per_length;
+    uint32_t rotation_order; uint32_t mirror; double mirror_angle_rad; uint32_t sources;
+    const fg_aero_source *source; uint32_t directions; const fg_aero_direction *direction;
+} fg_aero_texture_desc;
+typedef struct fg_aero_texture fg_aero_texture;
+void fg_aero_texture_destroy(fg_aero_texture *t);
+const fg_aero_texture_desc *fg_aero_texture_get(const fg_aero_texture *t);
+
+/* aero_object.h */
+#define FG_AERO_OBJECT_MAX_SOURCES 64
+typedef enum fg_aero_body { FG_AERO_STICK = 0, FG_AERO_COMPACT = 1 } fg_aero_body;
+typedef struct fg_aero_pose {
+    double position[3]; double axis[3]; double normal[3]; double velocity[3]; double time_s;
+} fg_aero_pose;
+typedef struct fg_aero_wind {
+    double velocity[3]; double gust; double gust_period_s; uint64_t seed;
+} fg_aero_wind;
+typedef struct fg_aero_object {
+    const fg_aero_texture *texture; fg_aero_body body; double start_m, end_m; uint32_t sources;
+    double gain; fg_aero_pose pose; fg_aero_wind wind; fg_absorption absorption;
+    double emit_time_s; double duration_s;
+} fg_aero_object;
+typedef struct fg_aero_report {
+    uint32_t sources; uint64_t blocks; uint64_t beyond_range_blocks; double max_speed_m_s;
+} fg_aero_report;
+fg_result fg_aero_object_post(fg_engine *engine, const fg_aero_object *o, fg_voice_id *id);
+fg_result fg_aero_object_set_pose(fg_engine *engine, fg_voice_id id, const fg_aero_pose *pose);
+fg_result fg_aero_object_set_wind(fg_engine *engine, fg_voice_id id, const fg_aero_wind *wind);
+fg_result fg_aero_object_get_report(fg_engine *engine, fg_voice_id id, fg_aero_report *out);
+
 /* lightning.h */
 #define FG_THUNDER_MAX_FEATURES 16
 #define FG_LIGHTNING_MAX_SKELETON 65536
@@ -232,6 +278,8 @@ fg_result fgs_scene_render(fgs_scene *scene, fgs_render_report *report, char *er
 const float *fgs_scene_samples(const fgs_scene *scene, uint64_t *frames);
 fg_result fgs_wav_write(const char *path, const float *samples, uint64_t frames,
                         uint32_t channels, double sample_rate_hz, char *err, size_t err_size);
+fg_result fgs_aero_texture_load(const char *path, fg_aero_texture **out, char *err,
+                                size_t err_size);
 """
 
 # Which header each function comes from, for the layout test.

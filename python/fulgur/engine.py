@@ -24,6 +24,7 @@ from ._native import EMIT_NOW, ffi, lib
 from .errors import FulgurError, check
 
 LAYOUT = {"stereo": lib.FG_LAYOUT_STEREO, "ambisonics": lib.FG_LAYOUT_AMBISONICS}
+BODIES = {"stick": lib.FG_AERO_STICK, "compact": lib.FG_AERO_COMPACT}
 ABSORPTION = {"off": lib.FG_ABSORPTION_OFF, "iso9613": lib.FG_ABSORPTION_ISO9613,
               "abe_fir": lib.FG_ABSORPTION_ABE_FIR}
 MODELS = {"wm": lib.FG_MODEL_WM, "abe": lib.FG_MODEL_ABE}
@@ -97,6 +98,7 @@ class Engine:
         self._active = 0
         self._sim = threading.Lock()
         self._audio = threading.Lock()
+        self._textures = []  # borrowed by aero voices: kept until close
 
     # -- lifetime and the thread rules --
 
@@ -128,6 +130,7 @@ class Engine:
                 self._life.wait()
         if handle is not None:
             lib.fg_engine_destroy(handle)
+        self._textures = []
 
     @property
     def closed(self):
@@ -179,11 +182,84 @@ class Engine:
         check(code, "Engine.post")
         return voice[0]
 
+    def post_aero(self, texture, *, position, axis, normal, velocity=(0.0, 0.0, 0.0),
+                  body="stick", start_m=0.0, end_m=0.0, sources=0, gain=0.0, wind=None,
+                  gust=0.0, gust_period_s=0.0, seed=0, absorption="off", emit_time_s=None,
+                  duration_s=0.0):
+        """Posts an aero object (fg_aero_object_post): texture (an
+        AeroTexture; 2-D for body "stick", 3-D for "compact"), its first
+        pose (position, axis, normal, velocity), a stick's span start_m ..
+        end_m along the axis and its sources (0: one per 3 D), the wind
+        (a velocity, m/s) with gust, gust_period_s and seed, absorption
+        ("off" or "iso9613"), emit_time_s (None: the adopting block) and
+        duration_s (0: until stop). Returns the voice's id. FulgurError:
+        the engine refused it (docs/aero-objects.md, "Bad input")."""
+        from .aero import AeroTexture
+        if not isinstance(texture, AeroTexture):
+            raise TypeError(f"Engine.post_aero: texture: expected an AeroTexture, got "
+                            f"{type(texture).__name__}")
+        if body not in BODIES:
+            raise ValueError(f"body: unknown {body!r} (known: {', '.join(BODIES)})")
+        o = ffi.new("fg_aero_object *")
+        o.texture = texture._handle
+        o.body = BODIES[body]
+        _aero_pose(o.pose, position, axis, normal, velocity, 0.0)
+        _aero_wind(o.wind, (0.0, 0.0, 0.0) if wind is None else wind, gust, gust_period_s, seed)
+        o.absorption = propagation_config({"absorption": absorption}).absorption
+        _convert.fill(o, {"start_m": start_m, "end_m": end_m, "sources": sources, "gain": gain,
+                          "emit_time_s": EMIT_NOW if emit_time_s is None else emit_time_s,
+                          "duration_s": duration_s}, "post_aero")
+        voice = ffi.new("fg_voice_id *")
+        handle = self._enter(self._sim, "post_aero")
+        try:
+            code = lib.fg_aero_object_post(handle, o, voice)
+        finally:
+            self._leave(self._sim)
+        check(code, "Engine.post_aero")
+        self._textures.append(texture)
+        return voice[0]
+
+    def set_aero_pose(self, voice, position, axis, normal, velocity=(0.0, 0.0, 0.0),
+                      time_s=0.0):
+        """Publishes where aero object voice is at time_s on the engine
+        clock (0: now): fg_aero_object_set_pose. One thread per object."""
+        pose = ffi.new("fg_aero_pose *")
+        _aero_pose(pose, position, axis, normal, velocity, time_s)
+        handle = self._enter(None, "set_aero_pose")
+        try:
+            code = lib.fg_aero_object_set_pose(handle, _voice(voice, "set_aero_pose"), pose)
+        finally:
+            self._leave(None)
+        check(code, "Engine.set_aero_pose")
+
+    def set_aero_wind(self, voice, velocity, gust=0.0, gust_period_s=0.0, seed=0):
+        """Changes aero object voice's wind (fg_aero_object_set_wind):
+        blended in over 20 ms from the next block on. One thread per
+        object."""
+        wind = ffi.new("fg_aero_wind *")
+        _aero_wind(wind, velocity, gust, gust_period_s, seed)
+        handle = self._enter(None, "set_aero_wind")
+        try:
+            code = lib.fg_aero_object_set_wind(handle, _voice(voice, "set_aero_wind"), wind)
+        finally:
+            self._leave(None)
+        check(code, "Engine.set_aero_wind")
+
+    def aero_report(self, voice):
+        """What aero object voice has done (fg_aero_report) as a dict:
+        sources, blocks, beyond_range_blocks, max_speed_m_s."""
+        report = ffi.new("fg_aero_report *")
+        handle = self._enter(None, "aero_report")
+        try:
+            code = lib.fg_aero_object_get_report(handle, _voice(voice, "aero_report"), report)
+        finally:
+            self._leave(None)
+        check(code, "Engine.aero_report")
+        return _convert.as_dict(report)
+
     def stop(self, voice):
         """Ends a continuous voice (or a bolt's later strokes)."""
-        voice = operator.index(voice)
-        if not 0 <= voice < 2**64:
-            raise ValueError(f"Engine.stop: {voice} is not a voice id")
+        voice = _voice(voice, "stop")
         handle = self._enter(self._sim, "stop")
         try:
             code = lib.fg_engine_stop(handle, voice)
@@ -288,3 +364,30 @@ class Engine:
     @property
     def sample_rate_hz(self):
         return self._config["sample_rate_hz"]
+
+
+def _voice(voice, what):
+    voice = operator.index(voice)
+    if not 0 <= voice < 2**64:
+        raise ValueError(f"Engine.{what}: {voice} is not a voice id")
+    return voice
+
+
+def _set3(target, value, what):
+    v = _convert.vector(value, 3, what)
+    for i in range(3):
+        target[i] = float(v[i])
+
+
+def _aero_pose(pose, position, axis, normal, velocity, time_s):
+    for name, value in (("position", position), ("axis", axis), ("normal", normal),
+                        ("velocity", velocity)):
+        _set3(getattr(pose, name), value, name)
+    pose.time_s = float(time_s)
+
+
+def _aero_wind(wind, velocity, gust, gust_period_s, seed):
+    _set3(wind.velocity, velocity, "wind")
+    wind.gust = float(gust)
+    wind.gust_period_s = float(gust_period_s)
+    wind.seed = operator.index(seed)

@@ -18,6 +18,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "fulgur/aero.h"
 #include "fulgur/engine.h"
 #include "fulgur/result.h"
 
@@ -105,6 +106,18 @@ FGS_API const float *fgs_scene_samples(const fgs_scene *scene, uint64_t *frames)
 FGS_API FG_NODISCARD fg_result fgs_wav_write(const char *path, const float *samples,
                                              uint64_t frames, uint32_t channels,
                                              double sample_rate_hz, char *err, size_t err_size);
+
+/* Reads the aerodynamic sound texture file at path
+ * (docs/aero-texture-format.md; what fulgur aerotex writes and a scene's
+ * "texture" names) into a texture of libfulgur's, for
+ * fg_aero_object_post. *out is the caller's until fg_aero_texture_destroy.
+ * [any-thread]
+ * Errors: FG_ERR_NULL path or out; FG_ERR_IO the file cannot be opened;
+ * FG_ERR_ARGUMENT it is not a valid texture (truncated, corrupt, another
+ * version: the message names the file and what is wrong) or memory ran
+ * out. *out is untouched on any error. */
+FGS_API FG_NODISCARD fg_result fgs_aero_texture_load(const char *path, fg_aero_texture **out,
+                                                     char *err, size_t err_size);
 
 #ifdef __cplusplus
 }
