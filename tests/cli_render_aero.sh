@@ -14,11 +14,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0
 
-# the dominant 1/24-octave band of a spectrogram (summed power over time)
-dominant() {
-    awk 'NF == 3 && $1 !~ /#/ {e[$2] += 10 ^ ($3 / 10)}
-         END {best = -1; for (f in e) if (e[f] > best) {best = e[f]; at = f}; print at}' "$1"
-}
+. "$(dirname "$0")/dominant_band.sh"
 
 # wires in a steady 9 m/s wind: the texture's frequency at 10 m/s, x 0.9
 "$fulgur" render "$dir/wind_wires.json" -o "$tmp/wires.wav" --set wind.gust=0 --set duration=1 \

@@ -17,10 +17,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0
 
-dominant() {
-    awk 'NF == 3 && $1 !~ /#/ {e[$2] += 10 ^ ($3 / 10)}
-         END {best = -1; for (f in e) if (e[f] > best) {best = e[f]; at = f}; print at}' "$1"
-}
+. "$(dirname "$0")/dominant_band.sh"
 rms_of() {
     "$fulgur" analyze "$1" | sed -n 's/.*rms \([0-9.e+-]*\) Pa.*/\1/p'
 }
