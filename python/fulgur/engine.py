@@ -93,7 +93,7 @@ class Engine:
         lib.fg_engine_get_config(self._handle, used)
         self._config = _convert.as_dict(used)
         self._channels = used.channels
-        self._planes = ffi.new("float *[2]")
+        self._planes = ffi.new("float *[]", self._channels)  # up to 16 in ambisonics
         self._life = threading.Condition()
         self._active = 0
         self._sim = threading.Lock()

@@ -119,3 +119,27 @@ def test_refusals(tmp_path):
         with pytest.raises(fulgur.FulgurError, match="Engine.aero_report"):
             e.aero_report(voice + 12345)
         assert e.stats()["posted"] == 1
+
+
+def test_ambisonics_from_python():
+    """A rod 3 m to the listener's left in first-order ambisonics: four
+    channels; W is the one-ear render sample for sample, and the
+    intensity vector (W times X, Y, Z) points left (+y in the head's
+    frame) within 1 degree."""
+    rod = rod_texture()
+    with fulgur.Engine(sample_rate_hz=RATE, layout="ambisonics", ambisonic_order=1,
+                       max_block_frames=256) as e:
+        e.set_listener([0, 0, 0], forward=[1, 0, 0])
+        post_rod(e, rod, 10.0)  # at (0, 3, 0): to the left of a listener facing +x
+        out = np.concatenate([e.render(256) for _ in range(100)])
+    with fulgur.Engine(sample_rate_hz=RATE, channels=1, max_block_frames=256) as e:
+        e.set_listener([0, 0, 0], forward=[1, 0, 0])
+        post_rod(e, rod, 10.0)
+        mono = np.concatenate([e.render(256) for _ in range(100)])[:, 0]
+    assert out.shape == (100 * 256, 4)
+    assert np.array_equal(out[:, 0], mono)
+    w = out[:, 0].astype(np.float64)
+    i = np.array([w @ out[:, 3], w @ out[:, 1], w @ out[:, 2]])  # ACN 3, 1, 2: X, Y, Z
+    angle = np.degrees(np.arccos(i[1] / np.linalg.norm(i)))
+    print(f"rod to the left: intensity vector {angle:.3g} deg from +y")
+    assert angle < 1.0
