@@ -55,10 +55,11 @@ typedef enum fg_flame_emitter_kind {
     /* Fuel released inside the shape, the gas left to rise by itself: a
      * campfire (a flat box on the floor), a torch's head (a small sphere). */
     FG_FLAME_EMITTER_SOURCE = 1,
-    /* Fuel released inside the shape with the gas there held at
-     * jet_velocity_m_s: a flame thrower, a dragon's breath. */
+    /* Fuel released inside the shape, with jet_velocity_m_s blended into
+     * the gas's velocity there as far as the shape covers each face: a
+     * flame thrower, a dragon's breath. */
     FG_FLAME_EMITTER_JET = 2,
-    /* A burning object: fuel released in the one-cell shell just outside
+    /* A burning object: fuel released in the one-cell layer just outside
      * the shape's surface (the shape itself is not an obstacle to the flow). */
     FG_FLAME_EMITTER_OBJECT = 3
 } fg_flame_emitter_kind;
@@ -68,8 +69,13 @@ typedef enum fg_flame_shape {
     FG_FLAME_BOX = 1      /* half_size_m about centre_m, axis-aligned */
 } fg_flame_shape;
 
-/* One emitter. Where the shape holds no cell centre (smaller than a cell),
- * it releases into the cell that holds centre_m. */
+/* One emitter. Its fuel goes to the cells it covers, in proportion to how
+ * much of each it covers (as the share of the cell-wide interval of signed
+ * distances about the cell centre's that is inside the shape, or inside
+ * the object's layer), which changes smoothly as the emitter moves; a
+ * shape covering less than a cell in all releases into the 8 cells around
+ * centre_m with trilinear weights. Every cell it covers is heated to at
+ * least temperature_k. */
 typedef struct fg_flame_emitter {
     fg_flame_emitter_kind kind;
     fg_flame_shape shape;
@@ -103,7 +109,8 @@ typedef struct fg_flame_sim_config {
                                  its temperature at constant pressure) */
     double cooling_1_s;       /* T - T_a decays at this rate: 3 */
     double buoyancy;          /* multiplies g = 9.81 m/s^2: 1 */
-    double iso_level;         /* B on the flame front, 1/s: burn_rate / 100 */
+    double iso_level;         /* B on the flame front, 1/s: burn_rate / 1000 (the
+                                 front then encloses the expansion to a few %) */
     int open_floor;           /* 0: the low z face is the ground (a wall); 1: open
                                  (a flame in mid-air). The other five faces are open. */
     int front_subdivision;    /* marching-cubes samples per cell edge, 1 .. 4: 1 */
@@ -204,6 +211,13 @@ FG_API void fg_flame_sim_get_stats(const fg_flame_sim *sim, fg_flame_sim_stats *
  * Errors: FG_ERR_NULL sim or out; FG_ERR_ARGUMENT an unknown field. */
 FG_API FG_NODISCARD fg_result fg_flame_sim_field(const fg_flame_sim *sim, fg_flame_field field,
                                                  fg_flame_field_view *out);
+
+/* The velocity at the last step's end, FG_VELOCITY_MAC over the grid of
+ * fg_flame_sim_field (m/s; the pointers are the simulation's, valid until
+ * the next fg_flame_sim_step or destroy). [sim-thread]
+ * Errors: FG_ERR_NULL sim or out. */
+FG_API FG_NODISCARD fg_result fg_flame_sim_velocity(const fg_flame_sim *sim,
+                                                    fg_flame_velocity *out);
 
 /* The last step's flame front: 9 doubles per triangle, as
  * fg_flame_front_triangles, valid until the next step or destroy.
