@@ -22,6 +22,7 @@ static const struct {
 #endif
     {"analyze", analyze_main, "write a WAV's waveform envelope and spectrogram for gnuplot"},
     {"aerotex", aerotex_main, "compute an aerodynamic sound texture of a shape by CFD (or show one)"},
+    {"flame", flame_main, "simulate a flame offline: its flux series (CSV) and its sound (WAV)"},
 };
 
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])

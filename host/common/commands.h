@@ -15,5 +15,6 @@ int analyze_main(int argc, char **argv);
 int run_main(int argc, char **argv);
 int view_main(int argc, char **argv);
 int aerotex_main(int argc, char **argv); /* host/cli/aerotex.c */
+int flame_main(int argc, char **argv);   /* host/cli/flame.c */
 
 #endif

@@ -89,6 +89,31 @@ static fg_result allocate(fg_fluid *f)
     return fg_fluid_multigrid_init(f);
 }
 
+size_t fg_fluid_memory_bytes(const fg_fluid_config *c)
+{
+    if (!c || check_config(c) != FG_OK)
+        return 0;
+    int n[3] = {c->cells[0], c->cells[1], c->dims == 3 ? c->cells[2] : 1};
+    size_t cells = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
+    size_t bytes = sizeof(fg_fluid), most = cells;
+    for (int a = 0; a < c->dims; a++) {
+        size_t faces = 1, inner = 1;
+        for (int b = 0; b < 3; b++) {
+            int m = n[b] + (a == b);
+            faces *= (size_t)m;
+            inner *= b < c->dims && m > 2 ? (size_t)(m - 2) : (size_t)(b < c->dims ? 0 : m);
+        }
+        most = faces > most ? faces : most;
+        /* u, u_prev, u_old, u_carry, u_src, u_fwd, lo, hi, face_fraction,
+         * face_sdf; visc_kind; the viscous nodes on the box's faces */
+        bytes += faces * (10 * sizeof(double) + 1) + (faces - inner) * sizeof(fg_fluid_visc_node);
+    }
+    size_t scalar_arrays = (size_t)c->scalars + (c->scalars > 0 ? 3 : 0);
+    bytes += (scalar_arrays + 8) * cells * sizeof(double);
+    bytes += most * (size_t)c->dims * sizeof(double);
+    return bytes + fg_fluid_multigrid_bytes(c->dims, n);
+}
+
 fg_result fg_fluid_create(const fg_fluid_config *c, fg_fluid **out)
 {
     if (!c || !out)

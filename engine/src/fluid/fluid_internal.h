@@ -115,6 +115,9 @@ typedef struct fg_fluid_force {
 FG_NODISCARD fg_result fg_fluid_create(const fg_fluid_config *c, fg_fluid **out);
 /* NULL is a no-op. */
 void fg_fluid_destroy(fg_fluid *f);
+/* The bytes fg_fluid_create allocates for c (a solid adds its cut cells and
+ * wall links on top), or 0 if c is refused by fg_fluid_create. */
+size_t fg_fluid_memory_bytes(const fg_fluid_config *c);
 /* The configuration with its defaults filled in. */
 const fg_fluid_config *fg_fluid_get_config(const fg_fluid *f);
 

@@ -83,6 +83,27 @@ fg_result fg_fluid_multigrid_init(fg_fluid *f)
     return r;
 }
 
+size_t fg_fluid_multigrid_bytes(int dims, const int n[3])
+{
+    fg_fluid_level L = {.n = {n[0], n[1], dims == 3 ? n[2] : 1}};
+    size_t bytes = 0;
+    for (int l = 0; l < FG_FLUID_MAX_LEVELS; l++) {
+        L.count = (size_t)L.n[0] * (size_t)L.n[1] * (size_t)L.n[2];
+        for (int a = 0; a < dims; a++)
+            bytes += level_faces(&L, a) * sizeof(double);
+        /* diag, inv_diag, b, r, and x on the coarse levels */
+        bytes += (l > 0 ? 5u : 4u) * L.count * sizeof(double);
+        int ok = 1;
+        for (int a = 0; a < dims; a++)
+            ok &= (L.n[a] + 1) / 2 >= MIN_COARSE_AXIS;
+        if (!ok)
+            break;
+        for (int a = 0; a < dims; a++)
+            L.n[a] = (L.n[a] + 1) / 2;
+    }
+    return bytes;
+}
+
 void fg_fluid_multigrid_deinit(fg_fluid *f)
 {
     for (int l = 0; l < FG_FLUID_MAX_LEVELS; l++) {

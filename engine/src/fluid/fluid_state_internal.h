@@ -236,6 +236,8 @@ void fg_fluid_velocity_at(const fg_fluid *f, double *const u[3], const double x[
 /* fluid_multigrid.c */
 fg_result fg_fluid_multigrid_init(fg_fluid *f);
 void fg_fluid_multigrid_deinit(fg_fluid *f);
+/* What fg_fluid_multigrid_init allocates for a grid of n cells. */
+size_t fg_fluid_multigrid_bytes(int dims, const int n[3]);
 /* Rebuilds level 0's conductances from the face fractions and the coarse
  * levels from level 0. */
 void fg_fluid_multigrid_build(fg_fluid *f);
