@@ -67,7 +67,7 @@ static int parse_layout(const char *text, void *value, char *why, size_t why_siz
         return 0;
     }
     if (strcmp(text, "binaural") == 0) {
-        *l = (render_layout){true, FG_LAYOUT_BINAURAL, FG_AMBISONIC_ORDER_MAX};
+        *l = (render_layout){true, FG_LAYOUT_BINAURAL, 0};
         return 0;
     }
     if (strncmp(text, ambi, sizeof ambi - 1) == 0) {
