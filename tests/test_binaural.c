@@ -30,6 +30,7 @@
 #include "ear_measure.h"
 #include "engine_fixture.h"
 #include "fulgur/fulgur.h"
+#include "spatial/binaural_internal.h"
 
 #define FS 48000.0
 #define FRAMES 2048
@@ -65,22 +66,15 @@ static void kemar_as_read(void **state)
     assert_true(kemar.set.sample_rate_hz == FS);
 }
 
-/* The measurement nearest the head-frame direction u. */
+/* The measurement nearest the head-frame direction u, and how far. */
 static size_t nearest(const double u[3], double *angle_deg)
 {
-    size_t best = 0;
-    double best_cos = -2.0;
-    for (size_t s = 0; s < kemar.set.count; s++) {
-        const double *d = kemar.set.direction + 3 * s;
-        double c = (d[0] * u[0] + d[1] * u[1] + d[2] * u[2]) /
-                   sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        if (c > best_cos) {
-            best_cos = c;
-            best = s;
-        }
-    }
-    *angle_deg = acos(fmin(1.0, best_cos)) * 180.0 / PI;
-    return best;
+    size_t s = fg_hrir_nearest(&kemar.set, u);
+    const double *d = kemar.set.direction + 3 * s;
+    double c = (d[0] * u[0] + d[1] * u[1] + d[2] * u[2]) /
+               sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    *angle_deg = acos(fmin(1.0, c)) * 180.0 / PI;
+    return s;
 }
 
 /* A spark 1 m from the head in the head-frame direction u (x ahead, y

@@ -93,8 +93,7 @@ void fg_binaural_deinit(fg_binaural *b)
     fg_convolver_deinit(&b->conv);
 }
 
-/* The measurement nearest the unit direction u. */
-static size_t nearest(const fg_hrir_set *h, const double u[3])
+size_t fg_hrir_nearest(const fg_hrir_set *h, const double u[3])
 {
     size_t best = 0;
     double best_cos = -2.0;
@@ -156,7 +155,7 @@ fg_result fg_binaural_init(fg_binaural *b, const fg_hrir_set *h)
         for (unsigned k = 0; k < FG_BINAURAL_SPEAKERS; k++) {
             double u[3];
             fg_binaural_speaker(k, u);
-            size_t s = nearest(h, u);
+            size_t s = fg_hrir_nearest(h, u);
             for (unsigned e = 0; e < 2; e++) {
                 const float *ir = (e == 0 ? h->left : h->right) + s * len;
                 double *out = filter + ((size_t)k * 2 + e) * len;

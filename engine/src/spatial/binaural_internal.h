@@ -44,6 +44,9 @@ void fg_binaural_speaker(unsigned k, double dir[3]);
  * (head frame): at most four non-zero, summing to 1. [audio-thread] */
 void fg_binaural_gains(const double dir[3], double *gain);
 
+/* The index of the set's measurement nearest the unit direction u. */
+size_t fg_hrir_nearest(const fg_hrir_set *hrirs, const double u[3]);
+
 /* Whether the HRIR set is one fg_binaural_init takes for an engine at
  * fs_hz: FG_ERR_NULL a NULL array, FG_ERR_ARGUMENT a count or length
  * outside the limits (fulgur/engine.h) or a zero direction,
