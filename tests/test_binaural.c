@@ -150,6 +150,45 @@ static void kemar_itd_and_ild(void **state)
     assert_int_equal(failures, 0);
 }
 
+/* The panning: a loudspeaker's own direction goes to it alone; any
+ * direction to at most four loudspeakers with gains summing to 1; the
+ * poles and a direction that is not a number stay inside the array. */
+static void panning_gains(void **state)
+{
+    (void)state;
+    double g[FG_BINAURAL_SPEAKERS];
+    for (unsigned k = 0; k < FG_BINAURAL_SPEAKERS; k++) {
+        double u[3];
+        fg_binaural_speaker(k, u);
+        fg_binaural_gains(u, g);
+        for (unsigned i = 0; i < FG_BINAURAL_SPEAKERS; i++)
+            if (fabs(g[i] - (i == k ? 1.0 : 0.0)) > 1e-9)
+                fail_msg("loudspeaker %u: gain %g on %u", k, g[i], i);
+    }
+    for (int n = 0; n < 2000; n++) {
+        double z = 1.0 - (2.0 * n + 1.0) / 2000.0, r = sqrt(1.0 - z * z), a = 2.39996 * n;
+        fg_binaural_gains((const double[]){r * cos(a), r * sin(a), z}, g);
+        double sum = 0.0;
+        unsigned used = 0;
+        for (unsigned i = 0; i < FG_BINAURAL_SPEAKERS; i++) {
+            assert_true(g[i] >= 0.0);
+            sum += g[i];
+            used += g[i] != 0.0;
+        }
+        assert_true(fabs(sum - 1.0) < 1e-12);
+        assert_true(used <= 4);
+    }
+    fg_binaural_gains((const double[]){0, 0, -1}, g);
+    assert_true(g[0] == 1.0);
+    fg_binaural_gains((const double[]){0, 0, 1}, g);
+    assert_true(g[FG_BINAURAL_SPEAKERS - 1] == 1.0);
+    fg_binaural_gains((const double[]){NAN, 0, 0}, g);
+    double sum = 0.0;
+    for (unsigned i = 0; i < FG_BINAURAL_SPEAKERS; i++)
+        sum += g[i];
+    assert_true(sum == 1.0);
+}
+
 static void engine_refuses_bad_hrirs(void **state)
 {
     (void)state;
@@ -262,6 +301,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(kemar_as_read),
         cmocka_unit_test(kemar_itd_and_ild),
+        cmocka_unit_test(panning_gains),
         cmocka_unit_test(engine_refuses_bad_hrirs),
         cmocka_unit_test(reader_refuses_bad_files),
     };

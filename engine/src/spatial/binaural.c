@@ -53,9 +53,13 @@ void fg_binaural_gains(const double dir[3], double *gain)
     double z = dir[2] > 1.0 ? 1.0 : dir[2] < -1.0 ? -1.0 : dir[2];
     double el = asin(z) * 180.0 / FG_PI + 90.0; /* 0 .. 180 */
     double az = atan2(dir[1], dir[0]) / (2.0 * FG_PI);
+    if (!isfinite(el) || !isfinite(az)) {
+        gain[ring_first[RINGS / 2]] = 1.0; /* no direction: ahead (never an index from NaN) */
+        return;
+    }
     az = az < 0.0 ? az + 1.0 : az;
     az = az >= 1.0 ? 0.0 : az;
-    double r = el / RING_STEP_DEG, jf = floor(r);
+    double r = el > 0.0 ? el / RING_STEP_DEG : 0.0, jf = floor(r);
     unsigned j = jf >= RINGS - 1 ? RINGS - 2 : (unsigned)jf;
     double t = r - (double)j;
     t = t > 1.0 ? 1.0 : t;
