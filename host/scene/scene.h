@@ -87,7 +87,8 @@ typedef struct scene {
     double sample_rate_hz;
     uint32_t channels;         /* the layout's: 1 or 2 for stereo, (order + 1)^2 ambisonic */
     fg_layout layout;          /* FG_LAYOUT_STEREO unless a host sets another (render --layout) */
-    uint32_t ambisonic_order;  /* FG_LAYOUT_AMBISONICS: 1..3 */
+    uint32_t ambisonic_order;  /* FG_LAYOUT_AMBISONICS, FG_LAYOUT_BINAURAL: 1..3 */
+    const fg_hrir_set *hrirs;  /* FG_LAYOUT_BINAURAL: borrowed from the host that read them */
     uint32_t block_frames;
     double duration_s;         /* 0: until every discharge has finished sounding */
     uint64_t seed;

@@ -12,6 +12,7 @@ void scene_engine_config(const scene *s, fg_engine_config *out)
         .channels = s->channels,
         .layout = s->layout,
         .ambisonic_order = s->ambisonic_order,
+        .hrirs = s->hrirs,
         .speed_of_sound_m_s = s->speed_of_sound_m_s,
         .air_temperature_k = s->temperature_c + 273.15,
         .air_humidity_pct = s->humidity_pct,

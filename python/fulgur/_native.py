@@ -77,7 +77,15 @@ fg_result fg_propagation_config_resolve(const fg_propagation_config *in,
 
 /* engine.h */
 typedef struct fg_engine fg_engine;
-typedef enum fg_layout { FG_LAYOUT_STEREO = 0, FG_LAYOUT_AMBISONICS = 1 } fg_layout;
+typedef enum fg_layout { FG_LAYOUT_STEREO = 0, FG_LAYOUT_AMBISONICS = 1,
+                         FG_LAYOUT_BINAURAL = 2 } fg_layout;
+#define FG_BINAURAL_LATENCY_FRAMES 64
+#define FG_HRIR_MAX_LENGTH 8192
+#define FG_HRIR_MAX_COUNT 65536
+typedef struct fg_hrir_set {
+    double sample_rate_hz; uint32_t count; uint32_t length; const double *direction;
+    const float *left; const float *right;
+} fg_hrir_set;
 #define FG_AMBISONIC_ORDER_MIN 1
 #define FG_AMBISONIC_ORDER_MAX 3
 typedef struct fg_engine_config {
@@ -85,7 +93,7 @@ typedef struct fg_engine_config {
     uint32_t segment_capacity; double speed_of_sound_m_s; double ear_spacing_m;
     double max_lookahead_s; uint32_t max_adopt_per_block; double air_temperature_k;
     double air_humidity_pct; double air_pressure_kpa; uint32_t work_per_frame;
-    fg_layout layout; uint32_t ambisonic_order;
+    fg_layout layout; uint32_t ambisonic_order; const fg_hrir_set *hrirs;
 } fg_engine_config;
 typedef enum fg_voice_model { FG_MODEL_WM = 0, FG_MODEL_ABE = 1 } fg_voice_model;
 #define FG_MAX_STROKES 32

@@ -59,8 +59,37 @@ typedef enum fg_layout {
      * frame (x ahead, y left, z up), each wave encoded from where it
      * arrives at the moment it arrives, so a turning head rotates the field
      * smoothly. */
-    FG_LAYOUT_AMBISONICS = 1
+    FG_LAYOUT_AMBISONICS = 1,
+    /* Two ears through measured head-related impulse responses
+     * (fg_engine_config.hrirs, e.g. read from a SOFA file by the host):
+     * each wave is panned, from where it arrives in the head's frame at the
+     * moment it arrives, onto 50 virtual loudspeakers on rings every 30
+     * degrees of elevation, each heard through the set's measured pair
+     * nearest to it (docs/spatial.md). channels: 2, left and right;
+     * ambisonic_order 0. The output is FG_BINAURAL_LATENCY_FRAMES late. */
+    FG_LAYOUT_BINAURAL = 2
 } fg_layout;
+
+/* The binaural filters' partition: the binaural output lags the sound
+ * field by this many frames. */
+#define FG_BINAURAL_LATENCY_FRAMES 64u
+/* HRIRs of the binaural layout: at most this many taps, at most this many
+ * directions. */
+#define FG_HRIR_MAX_LENGTH 8192u
+#define FG_HRIR_MAX_COUNT 65536u
+
+/* A set of measured head-related impulse responses, one pair per
+ * direction, at the engine's sample rate. Borrowed for the duration of
+ * fg_engine_create only. */
+typedef struct fg_hrir_set {
+    double sample_rate_hz;   /* must equal the engine's */
+    uint32_t count;          /* directions, 16 .. FG_HRIR_MAX_COUNT */
+    uint32_t length;         /* taps per response, 1..FG_HRIR_MAX_LENGTH */
+    const double *direction; /* count * 3: where each pair's source lies in the head's frame
+                              * (x ahead, y left, z up; any length > 0) */
+    const float *left;       /* count * length: the left ear's responses, pair after pair */
+    const float *right;      /* the same for the right ear */
+} fg_hrir_set;
 
 #define FG_AMBISONIC_ORDER_MIN 1u
 #define FG_AMBISONIC_ORDER_MAX 3u
@@ -85,7 +114,10 @@ typedef struct fg_engine_config {
     double air_pressure_kpa;      /* 101.325 */
     uint32_t work_per_frame;      /* FG_WORK_PER_FRAME_DEFAULT; the work bound above, <= 65536 */
     fg_layout layout;             /* FG_LAYOUT_STEREO */
-    uint32_t ambisonic_order;     /* ambisonics: 1; FG_AMBISONIC_ORDER_MIN..MAX. Stereo: 0 */
+    uint32_t ambisonic_order;     /* ambisonics: 1; FG_AMBISONIC_ORDER_MIN..MAX. Stereo,
+                                   * binaural: 0 */
+    const fg_hrir_set *hrirs;     /* binaural only (required); borrowed by fg_engine_create,
+                                   * NULL in the configuration in use */
 } fg_engine_config;
 
 /* The voice model a discharge is rendered with. */
@@ -186,8 +218,13 @@ FG_API FG_NODISCARD fg_result fg_engine_config_resolve(const fg_engine_config *c
  * fg_engine_destroy. [main-thread]
  * Errors: FG_ERR_NULL out; FG_ERR_SAMPLE_RATE rate outside [8000, 384000];
  * FG_ERR_NOT_FINITE a NaN/inf field; FG_ERR_ARGUMENT an unknown layout, an
- * ambisonic order outside 1..3 (or one given for stereo), channels not 1
- * or 2 for stereo or not (order + 1)^2 for ambisonics, a
+ * ambisonic order outside 1..3 (or one given for stereo or binaural), channels not 1
+ * or 2 for stereo, not (order + 1)^2 for ambisonics or not 2 for binaural,
+ * hrirs missing for binaural (or given for another layout), an HRIR set
+ * with fewer than 16 or more than FG_HRIR_MAX_COUNT directions, a length
+ * outside 1..FG_HRIR_MAX_LENGTH, a NULL array, a zero or non-finite
+ * direction or a non-finite tap (FG_ERR_NOT_FINITE) or a rate that is not
+ * the engine's (FG_ERR_SAMPLE_RATE), a
  * speed of sound outside [FG_SPEED_OF_SOUND_MIN_M_S, FG_SPEED_OF_SOUND_MAX_M_S],
  * a negative spacing/look-ahead, block > 65536, voices, segments or work
  * too large, air outside 200-350 K, (0, 100] %, 10-200 kPa; FG_ERR_NO_MEMORY. */

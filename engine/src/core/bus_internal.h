@@ -31,8 +31,9 @@ enum {
     FG_BUS_COUNT = 2 * FG_BUS_PLAIN
 };
 
-/* Output channels at most: a third-order ambisonic layout's 16. */
-#define FG_BUS_MAX_CHANNELS 16
+/* Channels at most: the binaural layout's 50 virtual loudspeakers
+ * (spatial/binaural_internal.h; a third-order ambisonic layout has 16). */
+#define FG_BUS_MAX_CHANNELS 50
 
 typedef struct fg_bus {
     fg_accum accum[FG_BUS_MAX_CHANNELS]; /* difference-domain input (the WM-waves), per channel */

@@ -7,6 +7,7 @@
 
 #include "engine_internal.h"
 #include "fg_rules.h"
+#include "spatial/binaural_internal.h"
 #include "spatial/layout_internal.h"
 
 #define MAX_BLOCK_LIMIT 65536u
@@ -54,6 +55,11 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
         if (in->ambisonic_order != 0 || channels > 2)
             return FG_ERR_ARGUMENT;
         break;
+    case FG_LAYOUT_BINAURAL:
+        if (in->ambisonic_order != 0 || (in->channels != 0 && in->channels != 2) || !in->hrirs)
+            return FG_ERR_ARGUMENT;
+        channels = 2;
+        break;
     case FG_LAYOUT_AMBISONICS:
         order = FG_DEF(in->ambisonic_order, FG_AMBISONIC_ORDER_MIN);
         if (order > FG_AMBISONIC_ORDER_MAX)
@@ -76,8 +82,16 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
         in->air_humidity_pct < 0 || in->air_humidity_pct > 100 ||
         (in->air_pressure_kpa != 0 && (in->air_pressure_kpa < 10 || in->air_pressure_kpa > 200)))
         return FG_ERR_ARGUMENT;
+    if (in->layout != FG_LAYOUT_BINAURAL && in->hrirs)
+        return FG_ERR_ARGUMENT;
+    double fs = FG_DEF(in->sample_rate_hz, defaults.sample_rate_hz);
+    if (in->hrirs) {
+        fg_result hr = fg_binaural_check(in->hrirs, fs);
+        if (hr != FG_OK)
+            return hr;
+    }
     *out = (fg_engine_config){
-        .sample_rate_hz = FG_DEF(in->sample_rate_hz, defaults.sample_rate_hz),
+        .sample_rate_hz = fs,
         .max_block_frames = FG_DEF(in->max_block_frames, defaults.max_block_frames),
         .channels = channels,
         .max_voices = FG_DEF(in->max_voices, defaults.max_voices),
@@ -92,6 +106,7 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
         .work_per_frame = FG_DEF(in->work_per_frame, defaults.work_per_frame),
         .layout = in->layout,
         .ambisonic_order = order,
+        .hrirs = in->hrirs,
     };
     return FG_OK;
 }
@@ -148,11 +163,20 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
     ok = ok && fg_ring_init(&e->garbage, cfg.max_voices, sizeof(fg_voice *));
     fg_air air = {cfg.air_temperature_k - 273.15, cfg.air_humidity_pct, cfg.air_pressure_kpa};
     if (r == FG_OK)
-        r = ok ? fg_bus_set_init(&e->buses, cfg.channels, cfg.max_block_frames,
+        r = ok ? fg_bus_set_init(&e->buses, fg_layout_bus_channels(&cfg), cfg.max_block_frames,
                                  cfg.sample_rate_hz, cfg.speed_of_sound_m_s,
                                  fg_layout_ears(&cfg) == 2 ? 0.5 * cfg.ear_spacing_m : 0.0,
                                  &air)
                : FG_ERR_NO_MEMORY;
+    if (r == FG_OK && cfg.layout == FG_LAYOUT_BINAURAL) {
+        unsigned planes = fg_layout_bus_channels(&cfg);
+        e->field_store = calloc((size_t)planes * cfg.max_block_frames, sizeof *e->field_store);
+        for (unsigned ch = 0; ch < planes && e->field_store; ch++)
+            e->field[ch] = e->field_store + (size_t)ch * cfg.max_block_frames;
+        r = e->field_store ? fg_binaural_init(&e->binaural, cfg.hrirs)
+                           : FG_ERR_NO_MEMORY;
+    }
+    e->cfg.hrirs = NULL; /* borrowed for create only */
     if (r != FG_OK) {
         fg_engine_destroy(e);
         return r;
@@ -184,6 +208,8 @@ void fg_engine_destroy(fg_engine *e)
     fg_ring_deinit(&e->inbox);
     fg_ring_deinit(&e->garbage);
     fg_bus_set_deinit(&e->buses);
+    fg_binaural_deinit(&e->binaural);
+    free(e->field_store);
     for (size_t i = 0; i < e->kind_count; i++) {
         if (e->kinds[i].kind->destroy)
             e->kinds[i].kind->destroy(e->kinds[i].storage);

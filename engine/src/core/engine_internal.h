@@ -11,6 +11,7 @@
 #include "listener_internal.h"
 #include "trajectory_internal.h"
 #include "source_internal.h"
+#include "spatial/binaural_internal.h"
 #include "voice_internal.h"
 #include "fg_ring.h"
 #include "fulgur/engine.h"
@@ -41,6 +42,10 @@ struct fg_engine {
     /* filter buses: set up at create, band filters designed by the sim
      * thread before the first voice that needs them */
     fg_bus_set buses;
+    /* binaural: the buses' ambisonic field, then the decoder to the ears */
+    float *field_store;
+    float *field[FG_BUS_MAX_CHANNELS];
+    fg_binaural binaural;
 
     /* audio thread */
     fg_voice **active;

@@ -79,7 +79,16 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
             i++;
         }
     }
-    uint64_t dropped = fg_bus_set_end(&e->buses, out, nframes);
+    uint64_t dropped;
+    if (e->cfg.layout == FG_LAYOUT_BINAURAL) {
+        unsigned planes = e->buses.channels;
+        for (unsigned ch = 0; ch < planes; ch++)
+            memset(e->field[ch], 0, (size_t)nframes * sizeof(float));
+        dropped = fg_bus_set_end(&e->buses, e->field, nframes);
+        fg_binaural_process(&e->binaural, (const float *const *)e->field, out, nframes);
+    } else {
+        dropped = fg_bus_set_end(&e->buses, out, nframes);
+    }
     if (dropped)
         fg_count(&e->counters.non_finite_blocks, dropped);
 

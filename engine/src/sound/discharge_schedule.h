@@ -55,7 +55,7 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg
                                                     long *last)
 {
     const double dir[3] = {ear->dir[0], ear->dir[1], ear->dir[2]};
-    double gain[FG_AMBISONIC_CHANNELS_MAX];
+    double gain[FG_LAYOUT_CHANNELS_MAX];
     unsigned out;
     const unsigned count = fg_layout_gains(play->cfg, ch, dir, &out, gain);
     const double next = ear->band_w;
@@ -136,7 +136,7 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         bool done = true;
         long lost_here = 0;
         for (unsigned ch = 0; ch < ears; ch++) {
-            long a, b;
+            long a = 0, b = 0; /* written by fg_discharge_add_event (count >= 1) */
             const fg_event_ear *ear = &ev->ear[ch];
             fg_event_ear heard;
             if (vb->moving) {

@@ -15,7 +15,19 @@
 #define FULGUR_LAYOUT_INTERNAL_H
 
 #include "ambisonics_internal.h"
+#include "binaural_internal.h"
 #include "fulgur/engine.h"
+
+/* The most channels fg_layout_gains names: the binaural layout's
+ * loudspeakers (a gain array of this size holds any layout's). */
+#define FG_LAYOUT_CHANNELS_MAX FG_BINAURAL_SPEAKERS
+
+/* The channels the buses carry: the output's, but for binaural the
+ * virtual loudspeakers its HRIRs filter to the ears (binaural_internal.h). */
+static inline unsigned fg_layout_bus_channels(const fg_engine_config *cfg)
+{
+    return cfg->layout == FG_LAYOUT_BINAURAL ? FG_BINAURAL_SPEAKERS : cfg->channels;
+}
 
 /* How many ears a model evaluates its geometry for. */
 static inline unsigned fg_layout_ears(const fg_engine_config *cfg)
@@ -25,11 +37,18 @@ static inline unsigned fg_layout_ears(const fg_engine_config *cfg)
 
 /* The output channels a wave of ear ch from head-frame direction dir
  * reaches, and their gains: writes them to first[0..count) and gain[], and
- * returns count. Stereo: channel ch alone, gain 1. Ambisonics: every
- * channel, the SN3D spherical harmonics of dir. [audio-thread] */
+ * returns count (at most FG_LAYOUT_CHANNELS_MAX). Stereo: channel ch alone,
+ * gain 1. Ambisonics: every channel, the SN3D spherical harmonics of dir.
+ * Binaural: every loudspeaker channel, the panning gains of dir (at most
+ * four non-zero). [audio-thread] */
 static inline unsigned fg_layout_gains(const fg_engine_config *cfg, unsigned ch,
                                        const double dir[3], unsigned *first, double *gain)
 {
+    if (cfg->layout == FG_LAYOUT_BINAURAL) {
+        fg_binaural_gains(dir, gain);
+        *first = 0;
+        return FG_BINAURAL_SPEAKERS;
+    }
     if (cfg->layout == FG_LAYOUT_AMBISONICS) {
         fg_ambisonic_gains(dir, cfg->ambisonic_order, gain);
         *first = 0;

@@ -1,0 +1,57 @@
+/* A multichannel, uniformly partitioned FFT convolution (overlap-save with
+ * a frequency-domain delay line): each of `inputs` signals is filtered by
+ * its own impulse response to each of `outputs` signals, and every output
+ * is the sum over the inputs,
+ *   y_o = sum_i h_{i,o} * x_i.
+ * The responses are cut into partitions of B taps; each block of B input
+ * frames is transformed once per input (a 2B-point real FFT), multiplied
+ * with every partition's spectrum against the spectra of the B-frame blocks
+ * before it, summed per output in the frequency domain and transformed back
+ * once per output. Output lags input by exactly B frames (whatever the
+ * render call sizes: frames are buffered to the partition). Cost per B
+ * frames: `inputs` forward FFTs, inputs * outputs * P spectral
+ * multiply-adds of B + 1 bins (P = ceil(length / B)), `outputs` inverse
+ * FFTs; an input silent for P blocks costs nothing.
+ * (Uniformly partitioned convolution: Wefers 2015, "Partitioned
+ * convolution algorithms for real-time auralization", ch. 5.)
+ *
+ * [main-thread] init allocates every buffer; [audio-thread] process never
+ * allocates, locks or loops beyond its frames. */
+#ifndef FULGUR_DSP_CONVOLVER_INTERNAL_H
+#define FULGUR_DSP_CONVOLVER_INTERNAL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "fft_internal.h"
+
+typedef struct fg_convolver {
+    unsigned inputs, outputs;
+    size_t block;        /* B, a power of two >= 2 */
+    size_t partitions;   /* P */
+    size_t bins;         /* B + 1 complex bins of the 2B-point transform */
+    fg_fft fft;          /* 2B points */
+    double *filter;      /* [input][output][partition][2 * bins] */
+    double *history;     /* [input][partition][2 * bins]: the inputs' last P block spectra */
+    size_t newest;       /* the slot of the newest block spectrum in history */
+    size_t *quiet;       /* [input]: blocks since the input was last non-zero */
+    double *in;          /* [input][2B]: the previous block and the one being filled */
+    double *out;         /* [output][B]: the block being played */
+    double *acc;         /* 2 * bins + 2: an output's spectrum, then its time signal */
+    size_t fill;         /* frames of the current block taken so far */
+} fg_convolver;
+
+/* Prepares a convolver for responses of `length` taps, filter[(i * outputs
+ * + o) * length + k] tap k from input i to output o (copied), partitions of
+ * `block` frames (a power of two in 2 .. 65536). Returns false, leaving *c
+ * zeroed, for a zero count or length, another block, or out of memory. */
+bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_t length,
+                       size_t block, const double *filter);
+/* Frees it; a zeroed convolver is a no-op. */
+void fg_convolver_deinit(fg_convolver *c);
+
+/* Takes n frames of each input (in[i][0..n)) and writes n frames of each
+ * output (out[o][0..n)), B frames late. [audio-thread] */
+void fg_convolver_process(fg_convolver *c, const float *const *in, float *const *out, size_t n);
+
+#endif
