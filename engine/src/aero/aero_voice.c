@@ -176,8 +176,8 @@ static void mix_add(direction_mix *m, uint32_t index, float weight, const double
  * moving linearly from g0[c] at the block's start to g1[c] at its end. */
 typedef struct aero_outputs {
     unsigned count;
-    float *near[FG_AMBISONIC_CHANNELS_MAX], *far[FG_AMBISONIC_CHANNELS_MAX];
-    double g0[FG_AMBISONIC_CHANNELS_MAX], g1[FG_AMBISONIC_CHANNELS_MAX];
+    float *near[FG_LAYOUT_CHANNELS_MAX], *far[FG_LAYOUT_CHANNELS_MAX];
+    double g0[FG_LAYOUT_CHANNELS_MAX], g1[FG_LAYOUT_CHANNELS_MAX];
 } aero_outputs;
 
 /* The outputs of ear ch between ends e0 and e1: in stereo its own channel
@@ -186,7 +186,7 @@ typedef struct aero_outputs {
 static void outputs_for(const fg_aero_voice *v, const fg_block_context *block, unsigned ch,
                         const fg_aero_end *e0, const fg_aero_end *e1, aero_outputs *out)
 {
-    double g0[FG_AMBISONIC_CHANNELS_MAX], g1[FG_AMBISONIC_CHANNELS_MAX];
+    double g0[FG_LAYOUT_CHANNELS_MAX], g1[FG_LAYOUT_CHANNELS_MAX];
     unsigned first0, first1;
     const unsigned count = fg_layout_gains(block->cfg, ch, e0->dir, &first0, g0);
     (void)fg_layout_gains(block->cfg, ch, e1->dir, &first1, g1);
