@@ -36,10 +36,11 @@ static bool abe_finite(const fg_event *ev, const fg_event_ear *ear, double fs_hz
 }
 
 /* The work bound's price of one path (docs/limits.md): each sample sums
- * the series, harmonics terms and the per-sample exponentials and
- * sines, which cost about ABE_OVERHEAD_TERMS terms; a unit (one WM-wave's
- * evaluation of one ear) costs as much as ABE_TERMS_PER_UNIT terms. Both
- * measured by bench_work_bound. */
+ * the series, harmonics terms, after per-sample exponentials and sines
+ * taken as ABE_OVERHEAD_TERMS terms (a judgement: the engine's voice
+ * always sums 16 harmonics, so the two parts are not measured apart).
+ * bench_work_bound measures a sample of the 16-harmonic series, 32 terms,
+ * at about the CPU time of one unit (a WM-wave's evaluation of one ear). */
 #define ABE_OVERHEAD_TERMS 16
 #define ABE_TERMS_PER_UNIT 32
 
