@@ -360,6 +360,102 @@ static void repeats_skipped_when_work_spent(void **state)
     assert_int_equal(skipped[1], 39);
 }
 
+/* Abe's series is priced by what it costs (docs/limits.md): one unit per
+ * ear, and (harmonics + 16) / 32 units per sample it renders into each bus
+ * of each channel, 16 harmonics: one unit a sample. Eight continuous
+ * 24-node Abe voices 2-8 m away repeating every 0.1 ms, like the scene that
+ * took 40 ms of CPU per 5.3 ms block when a unit stood for 32 samples: with
+ * work_per_frame 8 no block spends more than 8 x 256 + 4096 units, the work
+ * left undone is counted, and without the bound the same blocks need more
+ * than it. */
+#define ABE_NODES 24
+
+static fg_node abe_nodes[8][ABE_NODES];
+
+static void post_abe_voices(fg_engine *e)
+{
+    for (int v = 0; v < 8; v++) {
+        for (int i = 0; i < ABE_NODES; i++)
+            abe_nodes[v][i] =
+                (fg_node){v - 3.5 + 0.05 * sin(1.7 * i), 2.0, 2.0 + 0.25 * i, i - 1, 0};
+        fg_discharge d = {.nodes = abe_nodes[v], .node_count = ABE_NODES, .emit_time_s = 0,
+                          .strokes = 1, .seed = (uint64_t)v + 1, .continuous = 1,
+                          .repeat_min_s = FG_REPEAT_MIN_S, .repeat_max_s = FG_REPEAT_MIN_S,
+                          .model = FG_MODEL_ABE};
+        assert_int_equal(fg_preset_sound(FG_PRESET_PLASMA_BALL, &d.sound), FG_OK);
+        assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
+    }
+}
+
+static void abe_bound_holds_each_block(void **state)
+{
+    (void)state;
+    float *planes[2] = {left_a, right_a};
+    const uint64_t bound = 8 * BLOCK + FG_WORK_BLOCK_FLOOR;
+    uint64_t peak[2], skipped[2];
+    for (int bounded = 0; bounded < 2; bounded++) {
+        fg_engine *e = engine(8, BLOCK, bounded ? 8 : FG_WORK_PER_FRAME_MAX);
+        post_abe_voices(e);
+        uint64_t before = 0, most = 0;
+        /* unbounded, five blocks show the need (sound from the second on) */
+        for (int b = 0; b < (bounded ? 100 : 5); b++) {
+            assert_int_equal(fg_engine_render(e, planes, BLOCK), FG_OK);
+            fg_engine_report rep;
+            fg_engine_get_report(e, &rep);
+            uint64_t spent = rep.work_units - before;
+            before = rep.work_units;
+            if (bounded)
+                assert_true(spent <= bound);
+            most = spent > most ? spent : most;
+            assert_all_finite(left_a, BLOCK);
+        }
+        fg_engine_report rep;
+        fg_engine_get_report(e, &rep);
+        fg_engine_destroy(e);
+        assert_int_equal(rep.peak_block_work, most);
+        peak[bounded] = most;
+        skipped[bounded] = rep.skipped_work;
+    }
+    assert_int_equal(skipped[0], 0);
+    assert_true(peak[0] > 4 * bound); /* the scene needs far more than the bound */
+    assert_true(skipped[1] > 0);
+    assert_true(peak[1] > bound - 1000); /* the bound is spent, not left idle */
+}
+
+/* One Abe source (one segment) 20 m away heard through a 4096-frame block
+ * it fills: each ear costs 1 + 4096 x (16 + 16) / 32 = 4097 units. With
+ * work_per_frame 1 (4096 + 4096 units) the first ear fits and the second
+ * is skipped and counted at its price; with the default both are spent. */
+static void abe_price_counted(void **state)
+{
+    (void)state;
+    enum { BIG = 4096 };
+    static float l[BIG], r[BIG];
+    float *planes[2] = {l, r};
+    static fg_node two[2] = {{0, 20.0, 1.7, -1, 0}, {0, 20.0, 1.72, 0, 0}};
+    uint64_t spent[2], skipped[2];
+    for (int bounded = 0; bounded < 2; bounded++) {
+        fg_engine *e = engine(1, BIG, bounded ? 1 : 0);
+        fg_discharge d = {.nodes = two, .node_count = 2, .emit_time_s = 0, .strokes = 1,
+                          .seed = 1, .model = FG_MODEL_ABE};
+        assert_int_equal(fg_preset_sound(FG_PRESET_PLASMA_BALL, &d.sound), FG_OK);
+        assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
+        fx_render(e, planes, 2, BIG, BIG); /* arrives at 58 ms: part of block 0 */
+        fg_engine_report before;
+        fg_engine_get_report(e, &before);
+        fx_render(e, planes, 2, BIG, BIG); /* 85 .. 171 ms: all of it sounds */
+        fg_engine_report rep;
+        fg_engine_get_report(e, &rep);
+        fg_engine_destroy(e);
+        spent[bounded] = rep.work_units - before.work_units;
+        skipped[bounded] = rep.skipped_work - before.skipped_work;
+    }
+    assert_int_equal(spent[0], 2 * 4097);
+    assert_int_equal(skipped[0], 0);
+    assert_int_equal(spent[1], 4097);
+    assert_int_equal(skipped[1], 4097);
+}
+
 /* The repeat loop's last guard: a voice whose next repeat lies where
  * adding an interval no longer moves the clock (1e17 s on, a state no
  * valid post reaches in a lifetime) ends its repeats instead of looping
@@ -393,6 +489,8 @@ int main(void)
         cmocka_unit_test(bus_guard_keeps_filters),
         cmocka_unit_test(work_bound_counted),
         cmocka_unit_test(repeats_skipped_when_work_spent),
+        cmocka_unit_test(abe_bound_holds_each_block),
+        cmocka_unit_test(abe_price_counted),
         cmocka_unit_test(repeat_loop_ends),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

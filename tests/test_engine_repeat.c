@@ -135,6 +135,43 @@ static void test_continuous(void **state)
     free(on);
 }
 
+/* A continuous voice with a duration ends with its last emission that
+ * sounds: one whose repeats are drawn from 0.1 ms .. 10 s and that lasts
+ * 0.05 s frees its slot within 0.2 s (its last wave has arrived 1.5 ms
+ * after its emission), not when the repeat past its duration would have
+ * been due: such a voice once held its slot for 5.4 s (seed 1). */
+static void test_duration_frees_voice(void **state)
+{
+    (void)state;
+    const double fs = 48000;
+    const uint32_t block = 256;
+    float x[256];
+    for (uint64_t seed = 1; seed <= 8; seed++) {
+        fg_engine *e = make_engine(fs, 1);
+        fg_node nodes[FILAMENT];
+        filament(nodes);
+        fg_discharge d = {.nodes = nodes, .node_count = FILAMENT, .emit_time_s = 0.005,
+                          .continuous = 1, .repeat_min_s = FG_REPEAT_MIN_S,
+                          .repeat_max_s = FG_REPEAT_MAX_S, .duration_s = 0.05, .seed = seed};
+        assert_int_equal(fg_preset_sound(FG_PRESET_PLASMA_BALL, &d.sound), FG_OK);
+        assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
+        float *planes[2] = {x, NULL};
+        fg_engine_report st = {0};
+        double peak = 0;
+        while (fg_engine_time_s(e) < 0.2) {
+            assert_int_equal(fg_engine_render(e, planes, block), FG_OK);
+            peak = fmax(peak, fx_peak(x, block));
+            fg_engine_get_report(e, &st);
+            if (st.finished)
+                break;
+        }
+        CHECK(peak > 0, "seed %llu: silent", (unsigned long long)seed);
+        CHECK(st.finished == 1, "seed %llu: still alive at %.3f s", (unsigned long long)seed,
+              fg_engine_time_s(e));
+        fg_engine_destroy(e);
+    }
+}
+
 /* Lightning with strokes: a vertical main channel (flagged FG_NODE_MAIN)
  * with side branches. The first stroke sounds like the whole tree rendered
  * alone; every later stroke like the main channel alone. */
@@ -280,6 +317,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_continuous),
+        cmocka_unit_test(test_duration_frees_voice),
         cmocka_unit_test(test_dart_leaders),
         cmocka_unit_test(test_stop_lightning),
     };

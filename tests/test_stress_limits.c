@@ -116,17 +116,16 @@ static void *sim_main(void *arg)
         d.sound.ps0_pa = PICK(&rng, ps0);
         d.sound.sigma0 = PICK(&rng, sigma0);
         d.sound.return_stroke_speed_m_s = PICK(&rng, speed);
-        /* one voice in eight Abe's, never continuous: the work bound prices
-         * its series at one unit per 32 samples, and a block of a few of
-         * them costs tens of ms of CPU (docs/limits.md) */
-        d.model = fg_rng_next(&rng) % 8 ? FG_MODEL_WM : FG_MODEL_ABE;
-        if (d.model == FG_MODEL_WM && fg_rng_next(&rng) % 2 == 0) {
+        /* one voice in four Abe's, continuous or not: the work bound
+         * prices its series by what it costs (docs/limits.md) */
+        d.model = fg_rng_next(&rng) % 4 ? FG_MODEL_WM : FG_MODEL_ABE;
+        if (fg_rng_next(&rng) % 2 == 0) {
             d.continuous = 1;
             d.strokes = 1;
             d.repeat_min_s = FG_REPEAT_MIN_S;
-            /* not up to FG_REPEAT_MAX_S: the voice would keep its slot
-             * until the repeat past its duration was due, seconds on */
-            d.repeat_max_s = fg_rng_next(&rng) % 2 ? FG_REPEAT_MIN_S : 0.05;
+            /* up to FG_REPEAT_MAX_S: the voice ends with its last emission
+             * inside its duration, not when the repeat past it is due */
+            d.repeat_max_s = fg_rng_next(&rng) % 2 ? FG_REPEAT_MIN_S : FG_REPEAT_MAX_S;
             d.duration_s = 0.05;
         } else {
             d.strokes = fg_rng_next(&rng) % 4 ? 1 + (uint32_t)(fg_rng_next(&rng) % 2)

@@ -364,6 +364,12 @@ static int render_file(const scene *s, const char *out_path, const render_level 
     if (rep.capped)
         fprintf(stderr, "fulgur: stopped at the %.0f s cap with discharges still sounding\n",
                 SCENE_MAX_DURATION_S);
+    if (rep.engine.skipped_work || rep.engine.skipped_repeats)
+        fprintf(stderr, "fulgur: warning: %llu work units and %llu continuous repeats were "
+                        "skipped (the per-block work bound, or 64 emissions of one voice at "
+                        "once: docs/limits.md)\n",
+                (unsigned long long)rep.engine.skipped_work,
+                (unsigned long long)rep.engine.skipped_repeats);
     if (rep.aero_beyond_range)
         fprintf(stderr, "fulgur: warning: %zu aero objects met cross-flows outside their "
                         "textures' Reynolds range (%g to %g): played on by the same laws, "

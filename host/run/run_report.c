@@ -159,6 +159,10 @@ char *run_report_json(const run_ctx *run, double wall_s)
     cJSON_AddNumberToObject(e, "blocks", (double)st.blocks);
     cJSON_AddNumberToObject(e, "blocks_over_budget", (double)st.blocks_over_budget);
     cJSON_AddNumberToObject(e, "dropped_posts", (double)st.dropped_posts);
+    cJSON *work = cJSON_AddObjectToObject(e, "work");
+    cJSON_AddNumberToObject(work, "units", (double)st.work_units);
+    cJSON_AddNumberToObject(work, "peak_block_units", (double)st.peak_block_work);
+    cJSON_AddNumberToObject(work, "skipped_units", (double)st.skipped_work);
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     return text;

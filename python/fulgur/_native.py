@@ -110,7 +110,7 @@ typedef struct fg_engine_report {
     uint64_t posted; uint64_t dropped_posts; uint64_t adopted; uint64_t finished;
     uint64_t collected; uint64_t late_events; uint64_t late_samples; uint64_t skipped_repeats;
     uint64_t skipped_work; uint64_t non_finite_voices; uint64_t non_finite_blocks;
-    uint64_t blocks; uint64_t blocks_over_budget;
+    uint64_t blocks; uint64_t blocks_over_budget; uint64_t work_units; uint64_t peak_block_work;
 } fg_engine_report;
 uint32_t fg_discharge_stroke_offsets(const fg_discharge *discharge, double *offsets_s,
                                      uint32_t max);

@@ -184,11 +184,10 @@ static void post(run *r, bytes *b)
     double start = d.emit_time_s == FG_EMIT_NOW ? fg_engine_time_s(r->engine) : d.emit_time_s;
     uint32_t listed = strokes < FG_MAX_STROKES ? strokes : FG_MAX_STROKES;
     double last_stroke_s = listed ? offsets[listed - 1] : 0.0;
-    /* a continuous voice lasts its duration and the wait for the repeat
-     * past it, or (duration 0) until the stop after the operations */
+    /* a continuous voice's last emission falls inside its duration, or
+     * (duration 0) before the stop after the operations */
     double end = fmax(start, fg_engine_time_s(r->engine)) + last_stroke_s +
-                 (!d.continuous ? 0 : d.duration_s > 0 ? d.duration_s + d.repeat_max_s : INFINITY) +
-                 TAIL_S;
+                 (!d.continuous ? 0 : d.duration_s > 0 ? d.duration_s : INFINITY) + TAIL_S;
     if (reach > 64.0)
         r->far = 1;
     r->latest_end_s = fmax(r->latest_end_s, end);
@@ -224,8 +223,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     r.cfg.max_block_frames = r.block;
     r.cfg.channels = 1 + (shape / 36 % 2);
     r.cfg.max_voices = 1 + next(&b) % 8;
-    r.cfg.speed_of_sound_m_s = 100.0 + next(&b) * 1000.0 / 256; /* up to 1000 */
-    r.cfg.work_per_frame = next(&b) % 2 ? 1 : 0; /* the tightest bound, or the default */
+    /* FG_SPEED_OF_SOUND_MIN_M_S .. _MAX_ (the old * 1000 / 256 reached 1096 m/s,
+     * which create refuses: the first crash found once inputs ran fast) */
+    r.cfg.speed_of_sound_m_s = 100.0 + next(&b) * 900.0 / 255;
+    uint8_t sizes = next(&b);
+    r.cfg.work_per_frame = sizes % 2 ? 1 : 0; /* the tightest bound, or the default */
+    /* room for the largest tree here and its ground image, or (one in four)
+     * less than a 16-node tree needs: both sides of the capacity check,
+     * without the default's 131072 events, whose allocation and clearing
+     * took most of each input's time */
+    r.cfg.segment_capacity = sizes / 2 % 4 ? 2 * MAX_NODES : MAX_NODES / 2;
     if (fg_engine_create(&r.cfg, &r.engine) != FG_OK)
         abort();
     fg_engine_get_config(r.engine, &r.cfg);

@@ -37,14 +37,20 @@ typedef struct fg_engine fg_engine;
 #define FG_SPEED_OF_SOUND_MAX_M_S 1000.0
 
 /* The per-block work bound (docs/limits.md). A block of n frames may
- * evaluate at most work_per_frame * n + FG_WORK_BLOCK_FLOOR units across
- * all voices: one unit is one ear of one event of one instance in that
- * block (a WM-wave: a few closed-form terms; one of Abe's sources: up to
- * 32 samples of its series, and one unit more per 32 after). What is left
- * over is skipped and counted in fg_engine_report.skipped_work; a
- * continuous repeat due once the block's work is spent is skipped and
- * counted in skipped_repeats. */
+ * spend at most work_per_frame * n + FG_WORK_BLOCK_FLOOR units across all
+ * voices, each unit priced at about the same CPU time (bench_work_bound):
+ * one unit for each ear of each event of each instance in that block
+ * evaluated (a WM-wave: a few closed-form terms, whatever its length), and
+ * for one of Abe's sources one more for each sample of its series it
+ * renders into each bus and channel. An ear whose price does not fit what
+ * is left of the block is not rendered; it and the rest of its instance
+ * are counted in fg_engine_report.skipped_work, what was spent in
+ * work_units and peak_block_work; a continuous repeat due once the block's
+ * work is spent is skipped and counted in skipped_repeats. The default
+ * keeps a block's CPU time under its duration (docs/limits.md); an offline
+ * render, which has no deadline, may take FG_WORK_PER_FRAME_MAX. */
 #define FG_WORK_PER_FRAME_DEFAULT 64u
+#define FG_WORK_PER_FRAME_MAX 65536u
 #define FG_WORK_BLOCK_FLOOR 4096u
 
 /* The output layout: what the channels carry (docs/spatial.md). */
@@ -192,6 +198,9 @@ typedef struct fg_engine_report {
     uint64_t non_finite_blocks; /* bus blocks zeroed because they held a non-finite sample */
     uint64_t blocks;            /* successful render calls of one frame or more */
     uint64_t blocks_over_budget;/* render calls that took longer than their frames last */
+    uint64_t work_units;        /* work units the per-block bound let the blocks spend (above) */
+    uint64_t peak_block_work;   /* the most units one block spent: at most work_per_frame * n +
+                                 * FG_WORK_BLOCK_FLOOR for its n frames */
 } fg_engine_report;
 
 /* The start of each stroke of the discharge, seconds after its emit time,

@@ -23,8 +23,10 @@ typedef enum fg_wave_status {
     FG_WAVE_PENDING,  /* starts after this block */
     FG_WAVE_SOUNDING, /* contributes to this block */
     FG_WAVE_DONE,     /* ended before this block: contributes nothing here or later */
-    FG_WAVE_NON_FINITE /* its numbers are not finite (or place it beyond any sample
-                        * index): nothing was added, and nothing of it ever may be */
+    FG_WAVE_NON_FINITE, /* its numbers are not finite (or place it beyond any sample
+                         * index): nothing was added, and nothing of it ever may be */
+    FG_WAVE_SKIPPED     /* its price did not fit the block's work bound: nothing was
+                         * added (fg_engine_config.work_per_frame) */
 } fg_wave_status;
 
 void fg_accum_begin(fg_accum *b, double *d3, size_t n);

@@ -14,7 +14,7 @@
 #define MAX_VOICES_LIMIT 65536u
 #define SEGMENT_LIMIT (1u << 26)
 #define SETTING_LIMIT 10.0 /* metres of ear spacing, seconds of look-ahead */
-#define WORK_LIMIT 65536u
+#define WORK_LIMIT FG_WORK_PER_FRAME_MAX
 
 /* The defaults, as engine.h documents them. */
 static const fg_engine_config defaults = {
@@ -271,6 +271,8 @@ void fg_engine_get_report(const fg_engine *e, fg_engine_report *out)
     LOAD(non_finite_blocks)
     LOAD(blocks)
     LOAD(blocks_over_budget)
+    LOAD(work_units)
+    LOAD(peak_block_work)
 #undef LOAD
 }
 

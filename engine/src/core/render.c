@@ -46,7 +46,8 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
     fg_ears ears;
     fg_head_ears(&head, fg_layout_ears(&e->cfg), e->cfg.ear_spacing_m, &ears);
     fg_bus_set_begin(&e->buses, nframes);
-    uint64_t work_left = (uint64_t)e->cfg.work_per_frame * nframes + FG_WORK_BLOCK_FLOOR;
+    const uint64_t work_bound = (uint64_t)e->cfg.work_per_frame * nframes + FG_WORK_BLOCK_FLOOR;
+    uint64_t work_left = work_bound;
     fg_block_context block = {
         .cfg = &e->cfg,
         .start_frame = (double)start,
@@ -79,6 +80,11 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
             i++;
         }
     }
+    const uint64_t spent = work_bound - work_left;
+    fg_count(&e->counters.work_units, spent);
+    /* the audio thread alone writes it */
+    if (spent > atomic_load_explicit(&e->counters.peak_block_work, memory_order_relaxed))
+        atomic_store_explicit(&e->counters.peak_block_work, spent, memory_order_relaxed);
     uint64_t dropped;
     if (e->cfg.layout == FG_LAYOUT_BINAURAL) {
         unsigned planes = e->buses.channels;

@@ -54,6 +54,7 @@ typedef struct fg_counters {
     atomic_uint_least64_t posted, dropped_posts, adopted, finished, collected;
     atomic_uint_least64_t late_events, late_samples, skipped_repeats, skipped_work;
     atomic_uint_least64_t non_finite_voices, non_finite_blocks, blocks, blocks_over_budget;
+    atomic_uint_least64_t work_units, peak_block_work;
 } fg_counters;
 
 /* Adds n to a counter (relaxed: the counters order nothing). */

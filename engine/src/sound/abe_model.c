@@ -35,13 +35,44 @@ static bool abe_finite(const fg_event *ev, const fg_event_ear *ear, double fs_hz
     return fg_abe_wave_in_range(&ear->abe, fs_hz);
 }
 
+/* The work bound's price of one path (docs/limits.md): each sample sums
+ * the series, harmonics terms, after per-sample exponentials and sines
+ * taken as ABE_OVERHEAD_TERMS terms (a judgement: the engine's voice
+ * always sums 16 harmonics, so the two parts are not measured apart).
+ * bench_work_bound measures a sample of the 16-harmonic series, 32 terms,
+ * at about the CPU time of one unit (a WM-wave's evaluation of one ear). */
+#define ABE_OVERHEAD_TERMS 16
+#define ABE_TERMS_PER_UNIT 32
+
+/* The wave of ear as play's instance places it in the block. */
+static fg_abe_wave abe_placed(const fg_event_ear *ear, const fg_event_play *play)
+{
+    fg_abe_wave w = ear->abe;
+    w.arrival_s += play->offset_s + play->origin_frame / play->fs_hz;
+    return w;
+}
+
+static uint64_t abe_path_units(const fg_event_ear *ear, const fg_event_play *play)
+{
+    fg_abe_wave w = abe_placed(ear, play);
+    if (!fg_abe_wave_in_range(&w, play->fs_hz))
+        return 0; /* abe_add refuses it before any sample */
+    int64_t a, b;
+    fg_abe_wave_span(&w, play->fs_hz, &a, &b);
+    a = a < 0 ? 0 : a;
+    b = b >= (int64_t)play->frames ? (int64_t)play->frames - 1 : b;
+    if (b < a)
+        return 0;
+    uint64_t terms = (uint64_t)(b - a + 1) * (w.harmonics + ABE_OVERHEAD_TERMS);
+    return (terms + ABE_TERMS_PER_UNIT - 1) / ABE_TERMS_PER_UNIT;
+}
+
 static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
                               const fg_event_play *play, long *first, long *last)
 {
     (void)ev;
     const double fs = play->fs_hz;
-    fg_abe_wave w = ear->abe;
-    w.arrival_s += play->offset_s + play->origin_frame / fs;
+    fg_abe_wave w = abe_placed(ear, play);
     if (!fg_abe_wave_in_range(&w, fs))
         return FG_WAVE_NON_FINITE;
     int64_t a, b;
@@ -74,7 +105,7 @@ static const fg_discharge_model abe_model = {
     .wave = abe_wave,
     .start_s = abe_start_s,
     .finite = abe_finite,
-    .samples_per_unit = 32, /* its series, sample by sample */
+    .path_units = abe_path_units, /* its series, sample by sample */
 };
 
 const fg_source_ops fg_source_abe = {

@@ -110,10 +110,12 @@ typedef struct fg_discharge_model {
     /* Whether an ear's wave of ev has finite numbers at fs_hz and c_m_s
      * (the post refuses a discharge whose wave has not). */
     bool (*finite)(const fg_event *ev, const fg_event_ear *ear, double fs_hz, double c_m_s);
-    /* The work bound's charge (fg_engine_config.work_per_frame): one unit
-     * per ear evaluated, and one more per this many samples it sounds in
-     * the block; 0: one unit whatever its length. */
-    uint32_t samples_per_unit;
+    /* The work bound's price (fg_engine_config.work_per_frame), beyond
+     * the one unit every ear's evaluation costs: the units of adding an
+     * ear's wave to one bus of one channel over the block (play's); NULL
+     * for a wave of a few closed-form terms whatever its length. Units are
+     * priced by their measured CPU time (docs/limits.md). [audio-thread] */
+    uint64_t (*path_units)(const fg_event_ear *ear, const fg_event_play *play);
 } fg_discharge_model;
 
 typedef struct fg_instance {

@@ -47,12 +47,17 @@ static inline fg_event *fg_instance_event(fg_discharge_voice *v, const fg_instan
  * play (the instance's), on each output channel the layout sends it to
  * with the layout's gain (spatial/layout_internal.h), split between its
  * two distance bands: whole to each band's plain bus, and alpha - 1 of it
- * to the head-shadowed twin (spatial/spherical_head_internal.h). Returns
- * its status and its first and last sample relative to the block. */
+ * to the head-shadowed twin (spatial/spherical_head_internal.h). Its price
+ * (one unit and the model's path_units for each bus and channel) is spent
+ * from the block's work first: when it does not fit, nothing is added and FG_WAVE_SKIPPED returned with the price in
+ * *units. Returns its status and its first and last sample relative to the
+ * block. */
 static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg_event_ear *ear,
                                                     fg_event_play *play, unsigned ch,
+                                                    const fg_block_context *ctx,
+                                                    const fg_discharge_model *m,
                                                     fg_discharge_add_fn add, long *first,
-                                                    long *last)
+                                                    long *last, uint64_t *units)
 {
     const double dir[3] = {ear->dir[0], ear->dir[1], ear->dir[2]};
     double gain[FG_LAYOUT_CHANNELS_MAX];
@@ -63,6 +68,14 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg
         play->bus[k] = ear->bus + k / 2 + (k % 2) * FG_BUS_PLAIN;
     /* the first gain (the ear's, or W's) is 1: its status is the wave's,
      * the same on every channel; a channel of gain 0 gets nothing */
+    uint64_t paths = 0;
+    for (unsigned c = 0; c < count; c++)
+        if (c == 0 || gain[c] != 0.0)
+            paths += (1u + (ear->shadow != 0.0)) * (1u + (next != 0.0 && next != 1.0));
+    *units = 1 + (m->path_units ? paths * m->path_units(ear, play) : 0);
+    if (*units > *ctx->work_left)
+        return FG_WAVE_SKIPPED;
+    *ctx->work_left -= *units;
     fg_wave_status st = FG_WAVE_DONE;
     for (unsigned c = 0; c < count; c++) {
         if (c > 0 && gain[c] == 0.0)
@@ -79,24 +92,10 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg
     return st;
 }
 
-/* Spends the work of one ear evaluated with status st over samples
- * first .. last of the block (fg_discharge_model.samples_per_unit). */
-static inline void fg_discharge_charge(const fg_block_context *ctx, const fg_discharge_model *m,
-                                       fg_wave_status st, long first, long last)
-{
-    uint64_t cost = 1;
-    if (m->samples_per_unit && st == FG_WAVE_SOUNDING) {
-        long a = first < 0 ? 0 : first;
-        long b = last >= (long)ctx->frames ? (long)ctx->frames - 1 : last;
-        if (b >= a)
-            cost += (uint64_t)(b - a) / m->samples_per_unit;
-    }
-    *ctx->work_left = cost < *ctx->work_left ? *ctx->work_left - cost : 0;
-}
-
 /* Renders one instance; returns true once all its events are done. Stops
- * when the block's work is spent (what is left is counted) or a wave is
- * not finite (v->non_finite). */
+ * at the first ear whose price does not fit the block's work (it and the
+ * unit of each ear after it are counted skipped) or a wave that is not
+ * finite (v->non_finite). */
 static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instance *in,
                                                 const fg_discharge_block *vb,
                                                 fg_discharge_add_fn add)
@@ -122,10 +121,7 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
     uint64_t late = 0, lost = 0;
     const unsigned ears = ctx->ears->count;
     for (uint32_t k = in->lo; k < in->hi; k++) {
-        if (*ctx->work_left == 0) {
-            fg_count(&ctx->counters->skipped_work, (uint64_t)(in->hi - k) * ears);
-            break;
-        }
+        uint64_t skipped = 0;
         fg_event *ev = fg_instance_event(v, in, k);
         if (!vb->moving && ev->serial != ctx->serial) {
             for (unsigned ch = 0; ch < ears; ch++)
@@ -144,12 +140,18 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
                                 ctx->buses, &heard);
                 ear = &heard;
             }
-            fg_wave_status st = fg_discharge_add_event(ev, ear, &play, ch, add, &a, &b);
+            uint64_t units;
+            fg_wave_status st =
+                fg_discharge_add_event(ev, ear, &play, ch, ctx, v->model, add, &a, &b, &units);
             if (st == FG_WAVE_NON_FINITE) {
                 v->non_finite = true;
                 return false;
             }
-            fg_discharge_charge(ctx, v->model, st, a, b);
+            if (st == FG_WAVE_SKIPPED) {
+                skipped = units + (ears - ch - 1) + (uint64_t)(in->hi - k - 1) * ears;
+                done = false;
+                break;
+            }
             if (st != FG_WAVE_DONE)
                 done = false;
             long missed = k >= first_new && a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
@@ -162,6 +164,10 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         }
         if (done && k == in->lo)
             in->lo++;
+        if (skipped) {
+            fg_count(&ctx->counters->skipped_work, skipped);
+            break;
+        }
     }
     if (late) {
         fg_count(&ctx->counters->late_events, late);

@@ -75,7 +75,7 @@ static const fg_discharge_model wm_model = {
     .wave = wm_wave,
     .start_s = wm_start_s,
     .finite = wm_finite,
-    .samples_per_unit = 0, /* a few closed-form terms, whatever its length */
+    .path_units = NULL, /* a few closed-form terms, whatever its length */
 };
 
 const fg_source_ops fg_source_wm = {
