@@ -30,6 +30,9 @@ typedef struct scene_pose {
     double up[3];
 } scene_pose;
 
+/* The explicit trees the streaming reader took (scene_internal.h). */
+typedef struct scene_node_lists scene_node_lists;
+
 /* One discharge of the scene: what is posted, and where it came from. */
 typedef struct scene_discharge {
     /* What fg_engine_post takes, as it takes it: the tree (owned by the
@@ -105,6 +108,7 @@ typedef struct scene {
     scene_aero *aeros;         /* "aero_objects" */
     size_t aero_count;
     cJSON *json;               /* the parsed document the generator specs live in */
+    scene_node_lists *node_lists; /* while parsing: the trees read from the text */
 } scene;
 
 /* Parses text (size bytes, need not be NUL-terminated) into *out. Returns 0,
