@@ -31,7 +31,9 @@ static void number_text(uint64_t *state, char *out, size_t size)
     uint64_t r = next_random(state);
     double unit = (double)(r >> 11) / 9007199254740992.0;
     double v = (unit * 2 - 1) * pow(10.0, (double)(next_random(state) % 13) - 6);
-    switch (next_random(state) % 7) {
+    switch (next_random(state) % 9) {
+    case 7: snprintf(out, size, "%.18g", v); break; /* 19 digits: extended precision */
+    case 8: snprintf(out, size, "%.16e", v); break;
     case 0: snprintf(out, size, "%.17g", v); break;
     case 1: snprintf(out, size, "%.6f", v); break;
     case 2: snprintf(out, size, "%.3e", v); break;

@@ -16,6 +16,7 @@
  * usual message with its JSON path. So the errors are those of the cJSON
  * path by construction, and the values too: a number is converted exactly
  * (correctly rounded, as the C library's strtod, which cJSON uses). */
+#include <float.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,6 +29,7 @@
 
 typedef struct cursor {
     const char *p, *end;
+    int extended; /* long double carries 64 bits here (extended_works) */
 } cursor;
 
 static void skip_space(cursor *c)
@@ -119,10 +121,60 @@ static const double exact_powers_of_ten[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5, 
                                              1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                              1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
+#if LDBL_MANT_DIG == 64 && defined(__x86_64__)
+#define EXTENDED_POWERS 27 /* 5^27 < 2^64: 10^0..10^27 are exact in x87 long double */
+/* mantissa 10^exponent, |exponent| <= EXTENDED_POWERS, mantissa < 2^64,
+ * rounded once to the 64-bit significand of long double; that rounds to the
+ * nearest double as the exact value does unless it lies within one unit of
+ * its last place of a halfway point between two doubles: its 11 bits
+ * below a double's 53 are then 0x3FF..0x401, and 0 is returned (strtod
+ * decides). */
+/* Whether long double arithmetic really has 64 bits of significand here:
+ * an emulator (valgrind) may compute it in double. */
+static int extended_works(void)
+{
+    volatile uint64_t probe = (UINT64_C(1) << 62) + 1;
+    return (long double)probe - (long double)(UINT64_C(1) << 62) == 1.0L;
+}
+
+static int extended_convert(uint64_t mantissa, int exponent, double *out)
+{
+    static const long double powers[EXTENDED_POWERS + 1] = {
+        1e0L,  1e1L,  1e2L,  1e3L,  1e4L,  1e5L,  1e6L,  1e7L,  1e8L,  1e9L,
+        1e10L, 1e11L, 1e12L, 1e13L, 1e14L, 1e15L, 1e16L, 1e17L, 1e18L, 1e19L,
+        1e20L, 1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L};
+    long double power = powers[exponent < 0 ? -exponent : exponent];
+    long double q = exponent >= 0 ? (long double)mantissa * power : (long double)mantissa / power;
+    uint64_t significand;
+    memcpy(&significand, &q, sizeof significand); /* x87: the low 8 bytes */
+    unsigned below = (unsigned)(significand & 0x7FF);
+    if (below >= 0x3FF && below <= 0x401)
+        return 0;
+    *out = (double)q;
+    return 1;
+}
+#else
+#define EXTENDED_POWERS (-1)
+static int extended_works(void)
+{
+    return 0;
+}
+
+static int extended_convert(uint64_t mantissa, int exponent, double *out)
+{
+    (void)mantissa;
+    (void)exponent;
+    (void)out;
+    return 0;
+}
+#endif
+
 /* A JSON number (RFC 8259 grammar, at most NUMBER_MAX_CHARS characters)
- * into *out. A mantissa below 2^53 with a power of ten up to 10^22 is
- * converted with one correctly rounded multiplication or division of two
- * exact doubles (Clinger's fast path); any other goes through strtod. */
+ * into *out, correctly rounded. A mantissa below 2^53 with a power of ten
+ * up to 10^22 is converted with one correctly rounded multiplication or
+ * division of two exact doubles (Clinger's fast path); one of at most 19
+ * digits with a power up to 10^27 through x87 extended precision where
+ * that is provably exact (extended_convert); any other through strtod. */
 static int read_number(cursor *c, double *out)
 {
     skip_space(c);
@@ -132,25 +184,28 @@ static int read_number(cursor *c, double *out)
     if (p >= end || *p < '0' || *p > '9')
         return 0;
     uint64_t mantissa = 0;
-    int digits = 0, exponent = 0;
+    int digits = 0, exponent = 0; /* digits from the first non-zero one */
     if (*p == '0')
         p++;
     else
-        for (; p < end && *p >= '0' && *p <= '9'; p++) {
+        for (; p < end && *p >= '0' && *p <= '9'; p++, digits++) {
             if (digits < 19)
                 mantissa = mantissa * 10 + (uint64_t)(*p - '0');
             else
                 exponent++;
-            digits += digits > 0 || *p != '0';
         }
     if (p < end && *p == '.') {
         const char *first = ++p;
         for (; p < end && *p >= '0' && *p <= '9'; p++) {
+            if (digits == 0 && *p == '0') {
+                exponent--;
+                continue;
+            }
             if (digits < 19) {
                 mantissa = mantissa * 10 + (uint64_t)(*p - '0');
                 exponent--;
             }
-            digits += digits > 0 || *p != '0';
+            digits++;
         }
         if (p == first)
             return 0;
@@ -172,17 +227,21 @@ static int read_number(cursor *c, double *out)
     if (length > NUMBER_MAX_CHARS)
         return 0;
     c->p = p;
-    if (digits <= 19 && mantissa < (UINT64_C(1) << 53) && exponent >= -22 && exponent <= 22) {
-        double m = (double)mantissa;
-        double v = exponent >= 0 ? m * exact_powers_of_ten[exponent]
-                                 : m / exact_powers_of_ten[-exponent];
-        *out = negative ? -v : v;
+    double v;
+    if (mantissa == 0)
+        v = 0.0;
+    else if (digits <= 19 && mantissa < (UINT64_C(1) << 53) && exponent >= -22 && exponent <= 22)
+        v = exponent >= 0 ? (double)mantissa * exact_powers_of_ten[exponent]
+                          : (double)mantissa / exact_powers_of_ten[-exponent];
+    else if (!(c->extended && digits <= 19 && exponent >= -EXTENDED_POWERS && exponent <= EXTENDED_POWERS &&
+               extended_convert(mantissa, exponent, &v))) {
+        char text[NUMBER_MAX_CHARS + 1];
+        memcpy(text, start, length);
+        text[length] = '\0';
+        *out = strtod(text, NULL);
         return 1;
     }
-    char text[NUMBER_MAX_CHARS + 1];
-    memcpy(text, start, length);
-    text[length] = '\0';
-    *out = strtod(text, NULL);
+    *out = negative ? -v : v;
     return 1;
 }
 
@@ -318,7 +377,7 @@ char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists)
 {
     memset(lists, 0, sizeof *lists);
     lists->text = text;
-    cursor c = {text, text + size};
+    cursor c = {text, text + size, extended_works()};
     size_t capacity = 0;
     if (!walk_document(&c, lists, &capacity) || lists->count == 0) {
         scene_node_lists_free(lists);
@@ -332,9 +391,14 @@ char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists)
     memcpy(blanked, text, size);
     for (size_t i = 0; i < lists->count; i++) {
         const scene_node_list *l = &lists->list[i];
-        for (size_t k = l->start + 1; k + 1 < l->end; k++)
-            if (blanked[k] != '\n')
-                blanked[k] = ' ';
+        /* spaces between the newlines */
+        char *k = blanked + l->start + 1, *stop = blanked + l->end - 1;
+        while (k < stop) {
+            char *newline = memchr(k, '\n', (size_t)(stop - k));
+            char *until = newline ? newline : stop;
+            memset(k, ' ', (size_t)(until - k));
+            k = until + (newline != NULL);
+        }
     }
     lists->text = NULL;
     return blanked;
