@@ -10,7 +10,8 @@
 #define SCENE_SEED_RANGE ((number_range){0, 9007199254740992.0, .integer = true})
 
 /* One explicit tree's "nodes" read by the streaming reader: discharge
- * index, the array's bytes [start, end) in the text, its nodes (as
+ * index, the array's bytes [start, end) in the text (from its '[' to
+ * past its ']'), its nodes (as
  * written, offset not applied) and its item in the parsed document. */
 typedef struct scene_node_list {
     size_t discharge;
@@ -61,13 +62,14 @@ int scene_node_values(const double *v, int n);
 fg_node scene_node_from(const double v[5]);
 
 /* The streaming reader (scene_nodes_stream.c): reads the explicit trees'
- * "nodes" arrays it can take from text into *lists and returns a malloc'ed
- * copy of text (size bytes) with those arrays blanked, offsets and lines
- * kept; NULL (and *lists empty) when it takes none or memory runs out. */
-char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists);
+ * "nodes" arrays it can take from text into *lists and returns the rest
+ * of the text (malloc'ed, *rest_size bytes), each taken array written
+ * "[]"; NULL (and *lists empty) when it takes none or memory runs out. */
+char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists,
+                         size_t *rest_size);
 
 /* Points each list at its "nodes" item in json, the document parsed from
- * the blanked copy (before anything changes it). */
+ * the rest of the text (before anything changes it). */
 void scene_node_lists_bind(scene_node_lists *lists, const cJSON *json);
 
 /* If nodes_json is the item of the next list (trees are read in document

@@ -4,9 +4,10 @@
  * A big explicit tree is almost all of its scene file; as cJSON items its
  * numbers cost ~400 bytes of allocation per node and most of the parse.
  * This reader walks the document's top levels, reads each such "nodes"
- * array into fg_node values and blanks the array's bytes in a copy of the
- * text ('[' and ']' stay, newlines stay, everything else becomes a space),
- * so cJSON parses the rest with every offset, line and column unchanged.
+ * array into fg_node values and writes the rest of the text, each such
+ * array written "[]", for cJSON to parse. Should cJSON fail on the rest,
+ * the scene reader parses the whole text again (scene_parse.c), so that a
+ * message's line and column are the file's.
  *
  * It takes an array only when every element is [x, y, z, parent] or
  * [x, y, z, parent, main] of plain JSON numbers within the ranges
@@ -373,7 +374,8 @@ static int walk_document(cursor *c, scene_node_lists *lists, size_t *capacity)
     return take(c, '}');
 }
 
-char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists)
+char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists,
+                         size_t *rest_size)
 {
     memset(lists, 0, sizeof *lists);
     lists->text = text;
@@ -383,25 +385,28 @@ char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists)
         scene_node_lists_free(lists);
         return NULL;
     }
-    char *blanked = malloc(size ? size : 1);
-    if (!blanked) {
+    size_t taken = 0;
+    for (size_t i = 0; i < lists->count; i++)
+        taken += lists->list[i].end - lists->list[i].start - 2;
+    char *rest = malloc(size - taken);
+    if (!rest) {
         scene_node_lists_free(lists);
         return NULL;
     }
-    memcpy(blanked, text, size);
+    /* the text between the lists, each list written "[]" */
+    size_t from = 0, at = 0;
     for (size_t i = 0; i < lists->count; i++) {
         const scene_node_list *l = &lists->list[i];
-        /* spaces between the newlines */
-        char *k = blanked + l->start + 1, *stop = blanked + l->end - 1;
-        while (k < stop) {
-            char *newline = memchr(k, '\n', (size_t)(stop - k));
-            char *until = newline ? newline : stop;
-            memset(k, ' ', (size_t)(until - k));
-            k = until + (newline != NULL);
-        }
+        memcpy(rest + at, text + from, l->start - from);
+        at += l->start - from;
+        rest[at++] = '[';
+        rest[at++] = ']';
+        from = l->end;
     }
+    memcpy(rest + at, text + from, size - from);
+    *rest_size = at + size - from;
     lists->text = NULL;
-    return blanked;
+    return rest;
 }
 
 void scene_node_lists_bind(scene_node_lists *lists, const cJSON *json)

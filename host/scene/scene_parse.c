@@ -174,22 +174,23 @@ static int sets_reach_discharges(const char *const *sets, size_t set_count)
     return 0;
 }
 
-/* Parses text into *json, the big explicit trees read into *lists by the
- * streaming reader where it can (scene_nodes_stream.c). Whatever the copy
- * with those trees blanked fails on is parsed again from text, so that
- * every message is the one the document itself gets. */
+/* Parses text into *json, the explicit trees read into *lists by the
+ * streaming reader where it can (scene_nodes_stream.c). Whatever the rest
+ * of the text fails on is parsed again from the whole text, so that every
+ * message (its line and column too) is the one the document itself gets. */
 static int parse_with_lists(const char *text, size_t size, const char *const *sets,
                             size_t set_count, cJSON **json, scene_node_lists *lists, char *err,
                             size_t err_size)
 {
-    char *blanked = NULL;
+    char *rest = NULL;
+    size_t rest_size = 0;
     if (sets_reach_discharges(sets, set_count))
         memset(lists, 0, sizeof *lists);
     else
-        blanked = scene_nodes_stream(text, size, lists);
-    if (blanked) {
-        int rc = parse_document(blanked, size, json, err, err_size);
-        free(blanked);
+        rest = scene_nodes_stream(text, size, lists, &rest_size);
+    if (rest) {
+        int rc = parse_document(rest, rest_size, json, err, err_size);
+        free(rest);
         if (rc == 0) {
             scene_node_lists_bind(lists, *json);
             return 0;
@@ -281,7 +282,9 @@ int scene_read_file(const char *path, char **text, size_t *size, char *err, size
     /* the file may grow while it is read: never past the cap */
     for (;;) {
         if (n == cap) {
-            char *grown = fg_array_grow(buf, &cap, n + 1, 1, 65536);
+            /* room for the whole file at once (one byte more to see its end) */
+            char *grown = fg_array_grow(buf, &cap, n + 1, 1,
+                                        st.st_size > 0 ? (size_t)st.st_size + 1 : 65536);
             if (!grown)
                 break;
             buf = grown;
