@@ -296,82 +296,73 @@ static int add_list(scene_node_lists *lists, size_t *capacity, scene_node_list l
     return 1;
 }
 
-/* A "tree" object of discharge `index`: its "nodes" taken when it can be. */
-static int walk_tree(cursor *c, size_t index, scene_node_lists *lists, size_t *capacity)
+/* What a walk collects: the lists, their capacity, the discharge it is in. */
+typedef struct walk {
+    scene_node_lists *lists;
+    size_t capacity;
+    size_t discharge;
+} walk;
+
+/* Reads the value of one member (its key given) and returns 1, or 0 when
+ * the text is not what it should be. */
+typedef int (*member_reader)(cursor *c, const char *key, size_t len, walk *w);
+
+/* An object at c->p, each member's value read by member; a value that is
+ * not an object is skipped when skip is set, else refused. */
+static int walk_object(cursor *c, member_reader member, walk *w, int skip)
 {
     if (!take(c, '{'))
-        return skip_value(c);
+        return skip && skip_value(c);
     if (take(c, '}'))
         return 1;
     do {
         const char *key;
         size_t len;
-        if (!read_key(c, &key, &len))
+        if (!read_key(c, &key, &len) || !member(c, key, len, w))
             return 0;
-        skip_space(c);
-        cursor at = *c;
-        scene_node_list list = {.discharge = index, .start = (size_t)(c->p - lists->text)};
-        if (key_is(key, len, "nodes") && read_nodes(c, &list)) {
-            list.end = (size_t)(c->p - lists->text);
-            if (!add_list(lists, capacity, list))
-                return 0;
-        } else {
-            *c = at;
-            if (!skip_value(c))
-                return 0;
-        }
     } while (take(c, ','));
     return take(c, '}');
 }
 
-/* One element of "discharges": its "tree" walked, the rest skipped. */
-static int walk_discharge(cursor *c, size_t index, scene_node_lists *lists, size_t *capacity)
+/* A member of a "tree": "nodes" taken when it can be. */
+static int tree_member(cursor *c, const char *key, size_t len, walk *w)
 {
-    if (!take(c, '{'))
-        return skip_value(c);
-    if (take(c, '}'))
-        return 1;
-    do {
-        const char *key;
-        size_t len;
-        if (!read_key(c, &key, &len))
-            return 0;
-        if (!(key_is(key, len, "tree") ? walk_tree(c, index, lists, capacity) : skip_value(c)))
-            return 0;
-    } while (take(c, ','));
-    return take(c, '}');
+    skip_space(c);
+    cursor at = *c;
+    scene_node_list list = {.discharge = w->discharge,
+                            .start = (size_t)(c->p - w->lists->text)};
+    if (key_is(key, len, "nodes") && read_nodes(c, &list)) {
+        list.end = (size_t)(c->p - w->lists->text);
+        return add_list(w->lists, &w->capacity, list);
+    }
+    *c = at;
+    return skip_value(c);
 }
 
-static int walk_discharges(cursor *c, scene_node_lists *lists, size_t *capacity)
+/* A member of a discharge: its "tree" walked, the rest skipped. */
+static int discharge_member(cursor *c, const char *key, size_t len, walk *w)
+{
+    return key_is(key, len, "tree") ? walk_object(c, tree_member, w, 1) : skip_value(c);
+}
+
+static int walk_discharges(cursor *c, walk *w)
 {
     if (!take(c, '['))
         return skip_value(c);
     if (take(c, ']'))
         return 1;
-    size_t index = 0;
     do {
-        if (!walk_discharge(c, index++, lists, capacity))
+        if (!walk_object(c, discharge_member, w, 1))
             return 0;
+        w->discharge++;
     } while (take(c, ','));
     return take(c, ']');
 }
 
-static int walk_document(cursor *c, scene_node_lists *lists, size_t *capacity)
+/* A member of the document: "discharges" walked, the rest skipped. */
+static int document_member(cursor *c, const char *key, size_t len, walk *w)
 {
-    if (!take(c, '{'))
-        return 0;
-    if (take(c, '}'))
-        return 1;
-    do {
-        const char *key;
-        size_t len;
-        if (!read_key(c, &key, &len))
-            return 0;
-        if (!(key_is(key, len, "discharges") ? walk_discharges(c, lists, capacity)
-                                             : skip_value(c)))
-            return 0;
-    } while (take(c, ','));
-    return take(c, '}');
+    return key_is(key, len, "discharges") ? walk_discharges(c, w) : skip_value(c);
 }
 
 char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists,
@@ -380,8 +371,8 @@ char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists,
     memset(lists, 0, sizeof *lists);
     lists->text = text;
     cursor c = {text, text + size, extended_works()};
-    size_t capacity = 0;
-    if (!walk_document(&c, lists, &capacity) || lists->count == 0) {
+    walk w = {.lists = lists};
+    if (!walk_object(&c, document_member, &w, 0) || lists->count == 0) {
         scene_node_lists_free(lists);
         return NULL;
     }
