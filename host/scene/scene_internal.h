@@ -55,11 +55,14 @@ int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[
                      scene_node_lists *lists, const fg_node **nodes, size_t *count, char *err,
                      size_t err_size);
 
-/* Whether v[0..n) is a node the scene accepts ([x, y, z, parent] or
+/* scene_node.c. Whether v[0..n) is a node the scene accepts ([x, y, z, parent] or
  * [x, y, z, parent, main], each within its range), and that node (v[4]
  * read only when n is 5: v must hold 0 there otherwise). */
 int scene_node_values(const double *v, int n);
 fg_node scene_node_from(const double v[5]);
+
+/* The range of element k (0..4) of a node: coordinates, parent, main. */
+number_range scene_node_element_range(int k);
 
 /* The streaming reader (scene_nodes_stream.c): reads the explicit trees'
  * "nodes" arrays it can take from text into *lists and returns the rest

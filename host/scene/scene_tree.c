@@ -6,32 +6,6 @@
 
 static const char *const tree_keys[] = {"nodes", NULL};
 
-/* Coordinates are metres, within the engine's limit (10 000 km). */
-static const number_range coordinate = {.lo = -FG_TREE_MAX_COORDINATE_M,
-                                        .hi = FG_TREE_MAX_COORDINATE_M};
-static const number_range parent_index = {-1, INT32_MAX, .integer = true};
-static const number_range main_flag = {0, 1, .integer = true};
-
-static number_range element_range(int k)
-{
-    return k < 3 ? coordinate : k == 3 ? parent_index : main_flag;
-}
-
-int scene_node_values(const double *v, int n)
-{
-    if (n < 4 || n > 5)
-        return 0;
-    for (int k = 0; k < n; k++)
-        if (!number_range_holds(element_range(k), v[k]))
-            return 0;
-    return 1;
-}
-
-fg_node scene_node_from(const double v[5])
-{
-    return (fg_node){v[0], v[1], v[2], (int32_t)v[3], v[4] != 0 ? FG_NODE_MAIN : 0u};
-}
-
 /* Node `index` of the list at list_path; the paths of the node and its
  * elements are made only for a message (a big tree has millions of
  * numbers). */
@@ -48,7 +22,7 @@ static int parse_node(const cJSON *item, const char *list_path, size_t index, fg
     double v[5] = {0};
     int k = 0;
     for (const cJSON *c = item->child; c; c = c->next, k++) {
-        number_range r = element_range(k);
+        number_range r = scene_node_element_range(k);
         if (cJSON_IsNumber(c) && number_range_holds(r, c->valuedouble)) {
             v[k] = c->valuedouble;
             continue;
