@@ -410,7 +410,7 @@ static void test_load_refuses(void **state)
     fclose(f);
     assert_int_equal(truncate(path, (off_t)SCENE_MAX_FILE_BYTES + 1), 0); /* sparse */
     assert_int_equal(scene_load(path, &s, err, sizeof err), -1);
-    assert_non_null(strstr(err, "more than a scene file may hold (64 MiB)"));
+    assert_non_null(strstr(err, "more than a scene file may hold (256 MiB)"));
     f = fopen(path, "w");
     assert_non_null(f);
     fputs("{\"discharges\":[" SPARK "]}", f);

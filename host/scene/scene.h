@@ -19,9 +19,12 @@
 
 /* Longest scene, and the default length's cap. */
 #define SCENE_MAX_DURATION_S 3600.0
-/* The largest scene file: eight times a 200 000-segment tree's text
- * (about 8 MiB); a read from a device or a runaway generator stops here. */
-#define SCENE_MAX_FILE_BYTES (64u << 20)
+/* The largest scene file: a 10^6-segment tree written at 17 significant
+ * digits a coordinate is ~70 MB, and three times that fits; reading one
+ * holds the text and 32 bytes a node of explicit trees (about half the
+ * text's size again). A read from a device or a runaway generator stops
+ * here. */
+#define SCENE_MAX_FILE_BYTES (256u << 20)
 
 typedef struct scene_pose {
     double time_s;
@@ -29,6 +32,9 @@ typedef struct scene_pose {
     double forward[3];
     double up[3];
 } scene_pose;
+
+/* The explicit trees the streaming reader took (scene_internal.h). */
+typedef struct scene_node_lists scene_node_lists;
 
 /* One discharge of the scene: what is posted, and where it came from. */
 typedef struct scene_discharge {
@@ -106,6 +112,7 @@ typedef struct scene {
     scene_aero *aeros;         /* "aero_objects" */
     size_t aero_count;
     cJSON *json;               /* the parsed document the generator specs live in */
+    scene_node_lists *node_lists; /* while parsing: the trees read from the text */
 } scene;
 
 /* Parses text (size bytes, need not be NUL-terminated) into *out. Returns 0,

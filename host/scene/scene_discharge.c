@@ -109,8 +109,8 @@ static int parse_generator(const cJSON *item, const char *path, scene_discharge 
     return 0;
 }
 
-static int parse_source(const cJSON *obj, const char *base, scene_discharge *d, char *err,
-                        size_t err_size)
+static int parse_source(const cJSON *obj, const char *base, scene_node_lists *lists,
+                        scene_discharge *d, char *err, size_t err_size)
 {
     const cJSON *tree = cJSON_GetObjectItemCaseSensitive(obj, "tree");
     const cJSON *gen = cJSON_GetObjectItemCaseSensitive(obj, "generator");
@@ -119,8 +119,8 @@ static int parse_source(const cJSON *obj, const char *base, scene_discharge *d, 
     char path[JSON_PATH_MAX];
     json_path_key(path, sizeof path, base, tree ? "tree" : "generator");
     if (tree)
-        return scene_parse_tree(tree, path, d->offset_m, &d->post.nodes, &d->post.node_count,
-                                err, err_size);
+        return scene_parse_tree(tree, path, d->offset_m, lists, &d->post.nodes,
+                                &d->post.node_count, err, err_size);
     return parse_generator(gen, path, d, err, err_size);
 }
 
@@ -176,7 +176,7 @@ int scene_parse_discharge(const cJSON *item, const char *path, size_t index, con
         return json_fail(err, err_size, key, "expected \"wm\" (Matsuyama) or \"abe\" (Abe et al.)");
     d->post.model = model && strcmp(model->valuestring, "abe") == 0 ? FG_MODEL_ABE : FG_MODEL_WM;
     return parse_continuous(item, path, d, err, err_size) ||
-                   parse_source(item, path, d, err, err_size)
+                   parse_source(item, path, s->node_lists, d, err, err_size)
                ? -1
                : 0;
 }

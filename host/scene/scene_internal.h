@@ -9,6 +9,25 @@
 /* The seeds a scene may give: integers below 2^53, each exact in JSON. */
 #define SCENE_SEED_RANGE ((number_range){0, 9007199254740992.0, .integer = true})
 
+/* One explicit tree's "nodes" read by the streaming reader: discharge
+ * index, the array's bytes [start, end) in the text (from its '[' to
+ * past its ']'), its nodes (as
+ * written, offset not applied) and its item in the parsed document. */
+typedef struct scene_node_list {
+    size_t discharge;
+    size_t start, end;
+    fg_node *nodes;
+    size_t count;
+    const cJSON *json;
+} scene_node_list;
+
+struct scene_node_lists {
+    const char *text;  /* while reading */
+    scene_node_list *list;
+    size_t count;
+    size_t next;       /* the next to take */
+};
+
 /* "listener" (item may be NULL: the default pose) into s->poses. */
 int scene_parse_listener(const cJSON *item, scene *s, char *err, size_t err_size);
 
@@ -29,10 +48,41 @@ void scene_discharge_free_tree(scene_discharge *d);
 int scene_parse_propagation(const cJSON *item, const char *path, fg_propagation_config *p, char *err,
                             size_t err_size);
 
-/* "tree" at path: reads the nodes, adds offset_m and checks the tree into
+/* "tree" at path: reads the nodes (those lists took from the text, or
+ * the JSON's; lists may be NULL), adds offset_m and checks the tree into
  * *nodes (caller frees) and *count. */
 int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[3],
-                     const fg_node **nodes, size_t *count, char *err, size_t err_size);
+                     scene_node_lists *lists, const fg_node **nodes, size_t *count, char *err,
+                     size_t err_size);
+
+/* scene_node.c. Whether v[0..n) is a node the scene accepts ([x, y, z, parent] or
+ * [x, y, z, parent, main], each within its range), and that node (v[4]
+ * read only when n is 5: v must hold 0 there otherwise). */
+int scene_node_values(const double *v, int n);
+fg_node scene_node_from(const double v[5]);
+
+/* The range of element k (0..4) of a node: coordinates, parent, main. */
+number_range scene_node_element_range(int k);
+
+/* The streaming reader (scene_nodes_stream.c): reads the explicit trees'
+ * "nodes" arrays it can take from text into *lists and returns the rest
+ * of the text (malloc'ed, *rest_size bytes), each taken array written
+ * "[]"; NULL (and *lists empty) when it takes none or memory runs out. */
+char *scene_nodes_stream(const char *text, size_t size, scene_node_lists *lists,
+                         size_t *rest_size);
+
+/* Points each list at its "nodes" item in json, the document parsed from
+ * the rest of the text (before anything changes it). */
+void scene_node_lists_bind(scene_node_lists *lists, const cJSON *json);
+
+/* If nodes_json is the item of the next list (trees are read in document
+ * order), moves that list's nodes to *nodes and *count and returns 1;
+ * else 0. lists may be NULL. */
+int scene_node_lists_take(scene_node_lists *lists, const cJSON *nodes_json, fg_node **nodes,
+                          size_t *count);
+
+/* Frees what the lists still hold and empties them. */
+void scene_node_lists_free(scene_node_lists *lists);
 
 /* fg_tree_check with the fault described at nodes_path ("...nodes[7]: ..."). */
 int scene_check_tree(const fg_node *nodes, size_t count, const char *nodes_path, char *err,

@@ -145,27 +145,77 @@ static void drop_parsed_trees(cJSON *json)
         cJSON_GetObjectItemCaseSensitive(json, "random (template)"), "tree");
 }
 
+/* The document, with nothing after it but whitespace, into *json. */
+static int parse_document(const char *text, size_t size, cJSON **json, char *err,
+                          size_t err_size)
+{
+    const char *end = NULL;
+    *json = cJSON_ParseWithLengthOpts(text, size, &end, 0);
+    if (!*json)
+        return syntax_error(text, end ? end : text, "JSON syntax error", err, err_size);
+    while (end < text + size && *end && strchr(" \t\r\n", *end))
+        end++;
+    if (end < text + size) {
+        syntax_error(text, end, "unexpected text after the JSON document", err, err_size);
+        cJSON_Delete(*json);
+        *json = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+/* Whether a --set reaches into "discharges": the streaming reader's lists
+ * stand for the trees as the file wrote them, so it is not used then. */
+static int sets_reach_discharges(const char *const *sets, size_t set_count)
+{
+    for (size_t i = 0; i < set_count; i++)
+        if (strncmp(sets[i], "discharges", strlen("discharges")) == 0)
+            return 1;
+    return 0;
+}
+
+/* Parses text into *json, the explicit trees read into *lists by the
+ * streaming reader where it can (scene_nodes_stream.c). Whatever the rest
+ * of the text fails on is parsed again from the whole text, so that every
+ * message (its line and column too) is the one the document itself gets. */
+static int parse_with_lists(const char *text, size_t size, const char *const *sets,
+                            size_t set_count, cJSON **json, scene_node_lists *lists, char *err,
+                            size_t err_size)
+{
+    char *rest = NULL;
+    size_t rest_size = 0;
+    if (sets_reach_discharges(sets, set_count))
+        memset(lists, 0, sizeof *lists);
+    else
+        rest = scene_nodes_stream(text, size, lists, &rest_size);
+    if (rest) {
+        int rc = parse_document(rest, rest_size, json, err, err_size);
+        free(rest);
+        if (rc == 0) {
+            scene_node_lists_bind(lists, *json);
+            return 0;
+        }
+        scene_node_lists_free(lists);
+    }
+    return parse_document(text, size, json, err, err_size);
+}
+
 int scene_parse_in(const char *text, size_t size, const char *const *sets, size_t set_count,
                    const char *dir, scene *out, char *err, size_t err_size)
 {
     memset(out, 0, sizeof *out);
-    const char *end = NULL;
-    cJSON *json = cJSON_ParseWithLengthOpts(text, size, &end, 0);
-    if (!json)
-        return syntax_error(text, end ? end : text, "JSON syntax error", err, err_size);
-    while (end < text + size && *end && strchr(" \t\r\n", *end))
-        end++;
-    int rc = -1;
-    if (end < text + size) {
-        syntax_error(text, end, "unexpected text after the JSON document", err, err_size);
-        cJSON_Delete(json);
+    cJSON *json;
+    scene_node_lists lists;
+    if (parse_with_lists(text, size, sets, set_count, &json, &lists, err, err_size))
         return -1;
-    }
+    int rc = -1;
     for (size_t i = 0; i < set_count; i++)
         if (scene_override(json, sets[i], err, err_size) != 0) {
+            scene_node_lists_free(&lists);
             cJSON_Delete(json);
             return -1;
         }
+    out->node_lists = &lists;
     if (json_check_keys(json, "", top_keys, err, err_size) == 0 &&
         parse_settings(json, out, err, err_size) == 0 &&
         scene_parse_listener(cJSON_GetObjectItemCaseSensitive(json, "listener"), out, err,
@@ -179,6 +229,8 @@ int scene_parse_in(const char *text, size_t size, const char *const *sets, size_
         drop_parsed_trees(json);
         rc = 0;
     }
+    out->node_lists = NULL;
+    scene_node_lists_free(&lists);
     out->json = json;
     if (rc != 0)
         scene_deinit(out);
@@ -230,7 +282,9 @@ int scene_read_file(const char *path, char **text, size_t *size, char *err, size
     /* the file may grow while it is read: never past the cap */
     for (;;) {
         if (n == cap) {
-            char *grown = fg_array_grow(buf, &cap, n + 1, 1, 65536);
+            /* room for the whole file at once (one byte more to see its end) */
+            char *grown = fg_array_grow(buf, &cap, n + 1, 1,
+                                        st.st_size > 0 ? (size_t)st.st_size + 1 : 65536);
             if (!grown)
                 break;
             buf = grown;

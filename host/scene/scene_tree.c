@@ -6,12 +6,6 @@
 
 static const char *const tree_keys[] = {"nodes", NULL};
 
-/* Coordinates are metres, within the engine's limit (10 000 km). */
-static const number_range coordinate = {.lo = -FG_TREE_MAX_COORDINATE_M,
-                                        .hi = FG_TREE_MAX_COORDINATE_M};
-static const number_range parent_index = {-1, INT32_MAX, .integer = true};
-static const number_range main_flag = {0, 1, .integer = true};
-
 /* Node `index` of the list at list_path; the paths of the node and its
  * elements are made only for a message (a big tree has millions of
  * numbers). */
@@ -28,7 +22,7 @@ static int parse_node(const cJSON *item, const char *list_path, size_t index, fg
     double v[5] = {0};
     int k = 0;
     for (const cJSON *c = item->child; c; c = c->next, k++) {
-        number_range r = k < 3 ? coordinate : k == 3 ? parent_index : main_flag;
+        number_range r = scene_node_element_range(k);
         if (cJSON_IsNumber(c) && number_range_holds(r, c->valuedouble)) {
             v[k] = c->valuedouble;
             continue;
@@ -37,7 +31,7 @@ static int parse_node(const cJSON *item, const char *list_path, size_t index, fg
         json_path_index(elem, sizeof elem, path, (size_t)k);
         return json_number_value(c, elem, r, &v[k], err, err_size);
     }
-    *node = (fg_node){v[0], v[1], v[2], (int32_t)v[3], v[4] != 0 ? FG_NODE_MAIN : 0u};
+    *node = scene_node_from(v);
     return 0;
 }
 
@@ -56,7 +50,8 @@ int scene_check_tree(const fg_node *nodes, size_t count, const char *nodes_path,
 }
 
 int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[3],
-                     const fg_node **nodes, size_t *count, char *err, size_t err_size)
+                     scene_node_lists *lists, const fg_node **nodes, size_t *count, char *err,
+                     size_t err_size)
 {
     char list_path[JSON_PATH_MAX];
     json_path_key(list_path, sizeof list_path, path, "nodes");
@@ -65,14 +60,18 @@ int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[
     const cJSON *list = cJSON_GetObjectItemCaseSensitive(item, "nodes");
     if (!cJSON_IsArray(list))
         return json_fail(err, err_size, list_path, "required, an array of nodes");
-    size_t n = (size_t)cJSON_GetArraySize(list);
-    fg_node *out = malloc((n ? n : 1) * sizeof *out);
-    if (!out)
-        return json_fail(err, err_size, list_path, "out of memory");
-    size_t i = 0;
-    for (const cJSON *c = list->child; c; c = c->next, i++)
-        if (parse_node(c, list_path, i, &out[i], err, err_size))
-            goto fail;
+    fg_node *out;
+    size_t n;
+    if (!scene_node_lists_take(lists, list, &out, &n)) {
+        n = (size_t)cJSON_GetArraySize(list);
+        out = malloc((n ? n : 1) * sizeof *out);
+        if (!out)
+            return json_fail(err, err_size, list_path, "out of memory");
+        size_t i = 0;
+        for (const cJSON *c = list->child; c; c = c->next, i++)
+            if (parse_node(c, list_path, i, &out[i], err, err_size))
+                goto fail;
+    }
     fg_tree_translate(out, n, offset_m);
     if (scene_check_tree(out, n, list_path, err, err_size))
         goto fail;

@@ -2,7 +2,7 @@
 #include <string.h>
 
 #include "bus_internal.h"
-#include "air/absorb_filter_internal.h"
+#include "air/band_filters_internal.h"
 #include "spatial/spherical_head_internal.h"
 
 /* The band centres: 10 m to 30 km, log-spaced. */
@@ -76,16 +76,12 @@ void fg_bus_set_design_bands(fg_bus_set *s)
 {
     if (s->bands_designed)
         return;
-    fg_absorb_fit fit = {.valid = false};
-    for (unsigned k = 0; k < FG_ABSORPTION_BANDS; k++) {
-        fg_iir f;
-        /* each band starts from its nearer neighbour's fit */
-        fg_absorb_design(&f, &s->air, s->plan.centre_m[k], s->fs_hz, &fit);
-        fg_iir_reset(&f);
+    fg_iir f[FG_ABSORPTION_BANDS];
+    fg_band_filters_design(&s->air, s->plan.centre_m, FG_ABSORPTION_BANDS, s->fs_hz, f);
+    for (unsigned k = 0; k < FG_ABSORPTION_BANDS; k++)
         for (unsigned twin = 0; twin < 2; twin++)
             for (unsigned ch = 0; ch < s->channels; ch++)
-                s->band[twin][k][ch] = f;
-    }
+                s->band[twin][k][ch] = f[k];
     s->bands_designed = true;
 }
 
