@@ -27,7 +27,7 @@
  * (underrun_frames: the frames of emission time that passed without
  * their samples) and heard as silence, faded out and in again over
  * FG_FIRE_FADE_S. The voice fades out early when fewer than the
- * look-ahead (FG_FIRE_FADE_S of frames, twice, plus 4) lie ahead of what
+ * look-ahead (FG_FIRE_FADE_S of frames, twice, plus 6) lie ahead of what
  * it reads, so the fade itself never runs out of samples. Frames pushed
  * after their time has passed are let go unheard; the producer is told by
  * fg_fire_voice_get_report.read_frame where the voice reads.
