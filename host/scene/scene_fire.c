@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "fg_vec3.h"
 #include "scene_internal.h"
@@ -91,8 +92,8 @@ static int parse_path(const cJSON *item, const char *path, scene_fire *f, char *
     return 0;
 }
 
-/* Reads the flux file: numbers separated by white space, '#' to the end
- * of a line a comment. */
+/* Reads the flux file: numbers separated by white space or commas, '#'
+ * to the end of a line a comment (lines up to 4095 bytes). */
 static int load_flux(const cJSON *item, const char *path, const char *dir, scene_fire *f,
                      char *err, size_t err_size)
 {
@@ -107,29 +108,24 @@ static int load_flux(const cJSON *item, const char *path, const char *dir, scene
         snprintf(file, sizeof file, "%s", name->valuestring);
     else
         snprintf(file, sizeof file, "%s/%s", dir, name->valuestring);
-    char *text = NULL, why[512];
-    size_t size = 0;
-    if (scene_read_file(file, &text, &size, why, sizeof why) != 0)
-        return json_fail(err, err_size, at, "%s", why);
-    char *z = realloc(text, size + 1);
-    if (!z) {
-        free(text);
-        return json_fail(err, err_size, at, "out of memory");
-    }
-    text = z;
-    text[size] = '\0';
-    size_t cap = 0, line = 1;
+    struct stat st;
+    FILE *in = NULL;
+    if (stat(file, &st) != 0 || !S_ISREG(st.st_mode) || !(in = fopen(file, "r")))
+        return json_fail(err, err_size, at, "%s: cannot read it (missing, not a regular "
+                                            "file, or unreadable)", file);
+    size_t cap = 0, line = 0;
     int rc = 0;
-    for (char *c = text; *c && rc == 0;) {
-        if (*c == '#') {
-            while (*c && *c != '\n')
+    char buf[4096];
+    while (rc == 0 && fgets(buf, sizeof buf, in)) {
+        line++;
+        char *hash = strchr(buf, '#');
+        if (hash)
+            *hash = '\0';
+        for (char *c = buf; *c && rc == 0;) {
+            if (*c == ' ' || *c == '\t' || *c == '\r' || *c == '\n' || *c == ',') {
                 c++;
-        } else if (*c == '\n') {
-            line++;
-            c++;
-        } else if (*c == ' ' || *c == '\t' || *c == '\r' || *c == ',') {
-            c++;
-        } else {
+                continue;
+            }
             char *end;
             double v = strtod(c, &end);
             if (end == c || !isfinite(v) || fabs(v) > FG_FIRE_MAX_FLUX_M3_S) {
@@ -156,7 +152,9 @@ static int load_flux(const cJSON *item, const char *path, const char *dir, scene
             c = end;
         }
     }
-    free(text);
+    if (rc == 0 && ferror(in))
+        rc = json_fail(err, err_size, at, "%s: read error", file);
+    fclose(in);
     if (rc == 0 && f->flux_count < 4)
         rc = json_fail(err, err_size, at, "%s: %zu samples; at least 4 are needed", file,
                        f->flux_count);

@@ -120,12 +120,16 @@ static inline void fg_sample_ring_release_before(fg_sample_ring *ring, uint64_t 
         atomic_store_explicit(&ring->tail, n, memory_order_release);
 }
 
-/* Either side: frames held (written and not yet let go), a snapshot. */
+/* Any thread: frames held (written and not yet let go), a snapshot: the
+ * tail is read first, so the head is never behind it, and while both
+ * sides run the two may be from moments apart (at most the capacity is
+ * reported). */
 static inline uint64_t fg_sample_ring_held(fg_sample_ring *ring)
 {
     uint64_t tail = atomic_load_explicit(&ring->tail, memory_order_acquire);
     uint64_t head = atomic_load_explicit(&ring->head, memory_order_acquire);
-    return head - tail;
+    uint64_t held = head - tail;
+    return held > ring->mask + 1 ? ring->mask + 1 : held;
 }
 
 #endif
