@@ -83,8 +83,8 @@ static const struct {
     {"{\"discharges\": [}", "scene: JSON syntax error at line 1, column 17"},
     {"{\"discharges\":\n  [1,]}", "scene: JSON syntax error at line 2, column 6"},
     {WITH_SPARK("") " x", "scene: unexpected text after the JSON document at line 1, column 95"},
-    {"{}", "discharges: required (an array of discharges), unless \"random\" or "
-           "\"aero_objects\" is given"},
+    {"{}", "discharges: required (an array of discharges), unless \"random\", "
+           "\"aero_objects\" or \"fires\" is given"},
     {"{\"discharges\":[]}", "discharges: expected a non-empty array"},
     {"{\"discharges\":[3]}", "discharges[0]: expected an object"},
     {"{\"discharges\":[{\"preset\":\"spark_balls\"," TREE "}]}",
