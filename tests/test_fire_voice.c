@@ -526,8 +526,10 @@ static void threads_stream(void **state)
     /* whatever the threads' speeds (ThreadSanitizer slows the producer
      * most): the underruns are at most the frames whose time has passed */
     assert_true(rep.pushed_frames > 0 && rep.read_frame >= 0);
-    /* counted at the later ear, read_frame the earlier: 0.175 m / c = 25 frames */
-    assert_true(rep.underrun_frames <= (uint64_t)rep.read_frame + 1 + 25);
+    /* no emission time is after the engine's clock (the frame thread's
+     * jumps make the fire's emission times go back, so read_frame is no
+     * bound) */
+    assert_true(rep.underrun_frames <= atomic_load(&s.blocks) * BLOCK + 1);
     assert_true(rep.held_frames <= rep.capacity_frames);
     fg_engine_report er;
     fg_engine_get_report(s.e, &er);
