@@ -58,7 +58,7 @@ static const struct {
     {WITH_SPARK("\"smaple_rate\":48000,"),
      "smaple_rate: unknown key (known: sample_rate, channels, block, duration, seed, gain, "
      "speed_of_sound, temperature_c, humidity, pressure, propagation, listener, discharges, "
-     "random, camera, description, aero_objects, wind)"},
+     "random, camera, description, aero_objects, wind, fires)"},
     {WITH_SPARK("\"humidity\":0,"), "humidity: 0 is outside (0, 100]"},
     {WITH_SPARK("\"propagation\":{\"refraction\":{\"radius\":5000}},"),
      "propagation.refraction.radius: 5000 is outside 20000..200000"},
@@ -83,8 +83,8 @@ static const struct {
     {"{\"discharges\": [}", "scene: JSON syntax error at line 1, column 17"},
     {"{\"discharges\":\n  [1,]}", "scene: JSON syntax error at line 2, column 6"},
     {WITH_SPARK("") " x", "scene: unexpected text after the JSON document at line 1, column 95"},
-    {"{}", "discharges: required (an array of discharges), unless \"random\" or "
-           "\"aero_objects\" is given"},
+    {"{}", "discharges: required (an array of discharges), unless \"random\", "
+           "\"aero_objects\" or \"fires\" is given"},
     {"{\"discharges\":[]}", "discharges: expected a non-empty array"},
     {"{\"discharges\":[3]}", "discharges[0]: expected an object"},
     {"{\"discharges\":[{\"preset\":\"spark_balls\"," TREE "}]}",

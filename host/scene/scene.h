@@ -78,6 +78,24 @@ typedef struct scene_aero {
     scene_motion motion;
 } scene_aero;
 
+/* One fire (docs/scene-format.md, "fires"): where it is, along a path of
+ * timed points (one point: fixed), and its flux series, which
+ * scene_render turns into sound with fg_fire_feed and streams into a
+ * fire voice. */
+typedef struct scene_fire_point {
+    double time_s;
+    double position_m[3];
+} scene_fire_point;
+
+typedef struct scene_fire {
+    fg_fire_voice post;         /* the first pose the path's at its emit time */
+    fg_fire_sound_config sound; /* sample rate the scene's; the texture set by the render */
+    scene_fire_point *path;     /* ascending times */
+    size_t path_count;
+    double *flux_m3_s;          /* I at sound.sim_rate_hz, from the flux file */
+    size_t flux_count;
+} scene_fire;
+
 /* What the picture looks through (the "camera" block). */
 typedef struct scene_camera {
     bool given;                /* false: none in the file (see scene_camera_framing) */
@@ -111,6 +129,8 @@ typedef struct scene {
     scene_camera camera;
     scene_aero *aeros;         /* "aero_objects" */
     size_t aero_count;
+    scene_fire *fires;         /* "fires" */
+    size_t fire_count;
     cJSON *json;               /* the parsed document the generator specs live in */
     scene_node_lists *node_lists; /* while parsing: the trees read from the text */
 } scene;
@@ -170,6 +190,10 @@ void scene_listener_at(const scene *s, double t_s, fg_listener *out);
 
 /* Aero object a's pose at t (time_s = t). */
 void scene_aero_pose_at(const scene_aero *a, double t_s, fg_aero_pose *out);
+
+/* Fire f's pose at t (time_s = t): linear along its path, velocity the
+ * chord's, held before the first point and after the last. */
+void scene_fire_pose_at(const scene_fire *f, double t_s, fg_fire_pose *out);
 
 /* What a discharge happens among, as the picture shows it. */
 typedef enum scene_apparatus_kind {

@@ -99,4 +99,11 @@ int scene_parse_aero(const cJSON *json, const char *dir, scene *s, char *err, si
 /* Frees s->aeros and their textures. */
 void scene_aero_free(scene *s);
 
+/* "fires" (absent: nothing to do) into s->fires, their flux files read
+ * relative to dir. */
+int scene_parse_fires(const cJSON *json, const char *dir, scene *s, char *err, size_t err_size);
+
+/* Frees s->fires, their paths and flux series. */
+void scene_fire_free(scene *s);
+
 #endif

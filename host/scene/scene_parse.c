@@ -15,7 +15,7 @@
 static const char *const top_keys[] = {
     "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
     "temperature_c", "humidity", "pressure", "propagation", "listener", "discharges",
-    "random", "camera", "description", "aero_objects", "wind", NULL};
+    "random", "camera", "description", "aero_objects", "wind", "fires", NULL};
 
 static int syntax_error(const char *text, const char *at, const char *what, char *err,
                         size_t err_size)
@@ -83,12 +83,13 @@ static int parse_discharges(const cJSON *json, scene *s, char *err, size_t err_s
 {
     const cJSON *list = cJSON_GetObjectItemCaseSensitive(json, "discharges");
     if (!list && (cJSON_GetObjectItemCaseSensitive(json, "random") ||
-                  cJSON_GetObjectItemCaseSensitive(json, "aero_objects")))
-        return 0; /* random discharges or aero objects only */
+                  cJSON_GetObjectItemCaseSensitive(json, "aero_objects") ||
+                  cJSON_GetObjectItemCaseSensitive(json, "fires")))
+        return 0; /* random discharges, aero objects or fires only */
     if (!list)
         return json_fail(err, err_size, "discharges",
-                         "required (an array of discharges), unless \"random\" or "
-                         "\"aero_objects\" is given");
+                         "required (an array of discharges), unless \"random\", "
+                         "\"aero_objects\" or \"fires\" is given");
     if (!cJSON_IsArray(list) || cJSON_GetArraySize(list) == 0)
         return json_fail(err, err_size, "discharges", "expected a non-empty array");
     size_t n = (size_t)cJSON_GetArraySize(list);
@@ -225,6 +226,7 @@ int scene_parse_in(const char *text, size_t size, const char *const *sets, size_
         scene_parse_camera(cJSON_GetObjectItemCaseSensitive(json, "camera"), out, err,
                            err_size) == 0 &&
         scene_parse_aero(json, dir, out, err, err_size) == 0 &&
+        scene_parse_fires(json, dir, out, err, err_size) == 0 &&
         check_duration(out, err, err_size) == 0) {
         drop_parsed_trees(json);
         rc = 0;
@@ -345,6 +347,7 @@ void scene_deinit(scene *s)
         scene_discharge_free_tree(&s->discharges[i]);
     free(s->discharges);
     scene_aero_free(s);
+    scene_fire_free(s);
     free(s->poses);
     cJSON_Delete(s->json);
     memset(s, 0, sizeof *s);

@@ -27,6 +27,7 @@ typedef struct render_job {
     size_t segments;
     double pose_period_s;   /* between published poses */
     uint64_t next_pose;     /* the next pose to publish, in periods from 0 */
+    scene_fire_job fires;
 } render_job;
 
 static fg_result create_engine(render_job *job, char *err, size_t err_size)
@@ -42,7 +43,7 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
     job->pose_period_s = fmax(1.0 / POSE_HZ, (block_s + POSE_LEAD_S) / POSES_PER_BLOCK_MAX);
     fg_engine_config cfg;
     scene_engine_config(s, &cfg);
-    cfg.max_voices = (uint32_t)(s->discharge_count + s->aero_count);
+    cfg.max_voices = (uint32_t)(s->discharge_count + s->aero_count + s->fire_count);
     cfg.segment_capacity = events > UINT32_MAX ? UINT32_MAX : (uint32_t)events;
     /* an offline render has no deadline: the bound only keeps each block finite */
     cfg.work_per_frame = FG_WORK_PER_FRAME_MAX;
@@ -63,7 +64,7 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
         snprintf(err, err_size, "out of memory");
         return FG_ERR_NO_MEMORY;
     }
-    return FG_OK;
+    return scene_fire_job_init(&job->fires, s, err, err_size);
 }
 
 /* Publishes aero object i's pose at t, unless it has finished. */
@@ -154,6 +155,8 @@ static fg_result publish_poses(render_job *job, double horizon_s, char *err, siz
         for (size_t i = 0; i < job->s->aero_count; i++)
             if ((r = publish_aero_pose(job, i, t, err, err_size)) != FG_OK)
                 return r;
+        if ((r = scene_fire_job_poses(&job->fires, job->engine, t, err, err_size)) != FG_OK)
+            return r;
     }
     return FG_OK;
 }
@@ -170,7 +173,10 @@ static fg_result run(render_job *job, const scene_render_sink *sink, scene_rende
         uint32_t n = limit - frame < s->block_frames ? (uint32_t)(limit - frame) : s->block_frames;
         fg_result r;
         if ((r = publish_poses(job, t + n / rate + POSE_LEAD_S, err, err_size)) != FG_OK ||
-            (r = post_due(job, t + n / rate + SCENE_POST_LEAD_S, err, err_size)) != FG_OK)
+            (r = post_due(job, t + n / rate + SCENE_POST_LEAD_S, err, err_size)) != FG_OK ||
+            (r = scene_fire_job_feed(&job->fires, job->engine, t + n / rate + SCENE_POST_LEAD_S,
+                                     job->next_pose * job->pose_period_s, job->pose_period_s,
+                                     err, err_size)) != FG_OK)
             return r;
         r = fg_engine_render(job->engine, job->planes, n);
         if (r != FG_OK) {
@@ -184,8 +190,8 @@ static fg_result run(render_job *job, const scene_render_sink *sink, scene_rende
         report->frames += n;
         fg_engine_get_report(job->engine, &report->engine);
         if (s->duration_s == 0 && job->next == s->discharge_count &&
-            job->aeros_posted == s->aero_count &&
-            report->engine.finished == s->discharge_count + s->aero_count)
+            job->aeros_posted == s->aero_count && job->fires.posted == s->fire_count &&
+            report->engine.finished == s->discharge_count + s->aero_count + s->fire_count)
             return FG_OK;
     }
     report->capped = s->duration_s == 0;
@@ -212,7 +218,9 @@ fg_result scene_render(const scene *s, const scene_render_sink *sink,
     report->segments = job.segments;
     if (job.engine)
         fg_engine_get_report(job.engine, &report->engine);
+    report->fire_underrun_frames = job.fires.underrun_frames;
     fg_engine_destroy(job.engine);
+    scene_fire_job_deinit(&job.fires);
     free(job.order);
     free(job.aero_ids);
     free(job.aero_done);

@@ -8,8 +8,11 @@
  * time order (so that the engine prepares them off the audio path, as a
  * simulation thread would), fg_engine_render, the block handed to the sink,
  * fg_engine_collect. Aero objects are posted as the discharges are, and
- * their poses published with the listener's, sampled from their motion. A scene without a duration ends with the block in which
- * the last discharge fell silent, or at SCENE_MAX_DURATION_S. */
+ * their poses published with the listener's, sampled from their motion.
+ * Fires are posted likewise, their flux turned into sound and pushed as
+ * far ahead as their rings take (scene_fire_render.h). A scene without a
+ * duration ends with the block in which the last discharge fell silent,
+ * or at SCENE_MAX_DURATION_S. */
 #ifndef HOST_SCENE_SCENE_RENDER_H
 #define HOST_SCENE_SCENE_RENDER_H
 
@@ -18,6 +21,7 @@
 #include <stdint.h>
 
 #include "scene.h"
+#include "scene_fire_render.h"
 
 /* Discharges are posted this long before their emit time. */
 #define SCENE_POST_LEAD_S 0.5
@@ -39,6 +43,8 @@ typedef struct scene_render_report {
     bool capped;               /* no duration, and still sounding at SCENE_MAX_DURATION_S */
     size_t aero_beyond_range;  /* aero objects that met a speed outside their texture's
                                 * Reynolds range (fg_aero_report.beyond_range_blocks) */
+    uint64_t fire_underrun_frames; /* frames of the fires' streams that came too late
+                                * (fg_fire_voice_report.underrun_frames, summed) */
     fg_engine_report engine;   /* the engine's counters at the end */
 } scene_render_report;
 

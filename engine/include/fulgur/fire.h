@@ -2,7 +2,7 @@
  * Sound", SIGGRAPH 2011). docs/fire-sound.md gives the equations as built.
  *
  * Three objects, all of the simulation side (nothing here runs on the
- * audio thread; the fire voice that will play the result streams it
+ * audio thread; the fire voice, fulgur/fire_voice.h, plays the result, streamed
  * through an SPSC sample ring):
  *
  *   fg_flame_front  the flame front of one simulation step and its flux
@@ -22,16 +22,16 @@
  *                   feature windows and their kd-trees. Read-only once made:
  *                   any number of fire sounds, on any threads, may share it.
  *
- * The fire voice to come will own one fg_fire_sound: its sim-thread side
- * calls fg_fire_sound_process with each frame's new flux samples and pushes
- * the frames returned into an SPSC sample ring, which the render reads
- * fg_fire_sound_latency_s behind the flux (underruns counted, never
- * waited for).
+ * The fire voice (fulgur/fire_voice.h) plays it: fg_fire_feed owns one
+ * fg_fire_sound on the sim thread, calls fg_fire_sound_process with each
+ * frame's new flux samples and pushes the frames into the voice's SPSC
+ * sample ring, which the render reads fg_fire_sound_latency_s (plus the
+ * ring's lead) behind the flux (underruns counted, never waited for).
  *
  * Units: metres, seconds, m/s; the flux I in m^3/s; the sound p = dI/dt in
  * m^3/s^2. The paper drops the constant factor of eq. 3 (which a distance
- * 1/(4 pi r) and (gamma - 1)/c0^2 would turn into pascals); so do we: the
- * fire voice will scale p to pascals at a reference distance.
+ * 1/(4 pi r) and (gamma - 1)/c0^2 would turn into pascals); so do we here:
+ * the fire feed scales p to pascals at 1 m (fg_fire_pascals_per_flux_rate).
  */
 #ifndef FULGUR_FIRE_H
 #define FULGUR_FIRE_H

@@ -10,6 +10,7 @@
 #include "fulgur/engine.h"
 #include "fulgur/field.h"
 #include "fulgur/fire.h"
+#include "fulgur/fire_voice.h"
 #include "fulgur/flame.h"
 #include "fulgur/growth.h"
 #include "fulgur/lightning.h"
