@@ -24,15 +24,13 @@
 #include "core/trajectory_internal.h"
 #include "fg_sample_ring.h"
 #include "fulgur/fire_voice.h"
-
-/* The most output channels one ear's wave reaches (third-order ambisonics). */
-#define FG_FIRE_MAX_GAINS 16
+#include "spatial/layout_internal.h"
 
 /* One ear at the block's end (the next block's start). */
 typedef struct fg_fire_end {
     double tau_s;                    /* emission time heard there */
     double gain;                     /* g / r */
-    double layout[FG_FIRE_MAX_GAINS];/* the output channels' gains */
+    double layout[FG_LAYOUT_CHANNELS_MAX]; /* the output channels' gains */
     unsigned first, count;           /* the channels they reach: first .. first + count */
 } fg_fire_end;
 
