@@ -3,6 +3,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "common/text_escape.h"
 #include "json_read.h"
@@ -160,4 +161,23 @@ int json_name(const cJSON *obj, const char *base, const char *key, const char *c
                  names[i]);
     json_path_key(path, sizeof path, base, key);
     return json_fail(err, err_size, path, "expected one of %s", list);
+}
+
+int json_file_name(const cJSON *obj, const char *base, const char *key, const char *dir,
+                   const char *what, char *file, size_t file_size, char *err, size_t err_size)
+{
+    char path[JSON_PATH_MAX];
+    json_path_key(path, sizeof path, base, key);
+    const cJSON *name = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!cJSON_IsString(name) || !name->valuestring[0])
+        return json_fail(err, err_size, path, "required: %s", what);
+    if (name->valuestring[0] == '/' || !dir || !dir[0])
+        snprintf(file, file_size, "%s", name->valuestring);
+    else
+        snprintf(file, file_size, "%s/%s", dir, name->valuestring);
+    struct stat st;
+    if (stat(file, &st) == 0 && !S_ISREG(st.st_mode))
+        return json_fail(err, err_size, path, "%s: not a regular file (a device, FIFO or "
+                                              "directory)", file);
+    return 0;
 }

@@ -57,4 +57,13 @@ int json_bool(const cJSON *obj, const char *base, const char *key, bool *out, ch
 int json_name(const cJSON *obj, const char *base, const char *key, const char *const *names,
               int count, int *out, char *err, size_t err_size);
 
+/* Reads obj[key], required, as the name of a file, relative to dir unless
+ * absolute or dir is NULL or "": file (file_size bytes) gets the name
+ * resolved. Refuses a missing or empty string (what describes the file it
+ * must name) and a name of something that exists but is not a regular
+ * file (a FIFO would stall the parse); a missing file is the caller's to
+ * report as it opens it. */
+int json_file_name(const cJSON *obj, const char *base, const char *key, const char *dir,
+                   const char *what, char *file, size_t file_size, char *err, size_t err_size);
+
 #endif

@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "common/aero_texture_file.h"
 #include "scene_internal.h"
@@ -136,21 +135,11 @@ static int parse_motion(const cJSON *item, const char *path, scene_motion *m, ch
 static int load_texture(const cJSON *obj, const char *path, const char *dir,
                         fg_aero_texture **out, char *err, size_t err_size)
 {
-    char at[JSON_PATH_MAX];
+    char at[JSON_PATH_MAX], file[4096];
     json_path_key(at, sizeof at, path, "texture");
-    const cJSON *name = cJSON_GetObjectItemCaseSensitive(obj, "texture");
-    if (!cJSON_IsString(name) || !name->valuestring[0])
-        return json_fail(err, err_size, at, "required: the name of a texture file "
-                                            "(fulgur aerotex -o FILE)");
-    char file[4096];
-    if (name->valuestring[0] == '/' || !dir || !dir[0])
-        snprintf(file, sizeof file, "%s", name->valuestring);
-    else
-        snprintf(file, sizeof file, "%s/%s", dir, name->valuestring);
-    struct stat st;
-    if (stat(file, &st) == 0 && !S_ISREG(st.st_mode)) /* a FIFO would stall the parse */
-        return json_fail(err, err_size, at, "%s: not a regular file (a device, FIFO or "
-                                            "directory)", file);
+    if (json_file_name(obj, path, "texture", dir, "the name of a texture file (fulgur aerotex -o FILE)",
+                       file, sizeof file, err, err_size))
+        return -1;
     char why[512];
     if (aero_texture_load(file, out, why, sizeof why) != 0)
         return json_fail(err, err_size, at, "%s", why);

@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "fg_vec3.h"
 #include "scene_internal.h"
@@ -97,22 +96,15 @@ static int parse_path(const cJSON *item, const char *path, scene_fire *f, char *
 static int load_flux(const cJSON *item, const char *path, const char *dir, scene_fire *f,
                      char *err, size_t err_size)
 {
-    char at[JSON_PATH_MAX];
+    char at[JSON_PATH_MAX], file[4096];
     json_path_key(at, sizeof at, path, "flux");
-    const cJSON *name = cJSON_GetObjectItemCaseSensitive(item, "flux");
-    if (!cJSON_IsString(name) || !name->valuestring[0])
-        return json_fail(err, err_size, at, "required: the name of a flux series file (I in "
-                                            "m^3/s, one number per simulation step)");
-    char file[4096];
-    if (name->valuestring[0] == '/' || !dir || !dir[0])
-        snprintf(file, sizeof file, "%s", name->valuestring);
-    else
-        snprintf(file, sizeof file, "%s/%s", dir, name->valuestring);
-    struct stat st;
-    FILE *in = NULL;
-    if (stat(file, &st) != 0 || !S_ISREG(st.st_mode) || !(in = fopen(file, "r")))
-        return json_fail(err, err_size, at, "%s: cannot read it (missing, not a regular "
-                                            "file, or unreadable)", file);
+    if (json_file_name(item, path, "flux", dir, "the name of a flux series file (I in m^3/s, "
+                                                "one number per simulation step)",
+                       file, sizeof file, err, err_size))
+        return -1;
+    FILE *in = fopen(file, "r");
+    if (!in)
+        return json_fail(err, err_size, at, "%s: cannot read it (missing or unreadable)", file);
     size_t cap = 0, line = 0;
     int rc = 0;
     char buf[4096];
