@@ -5,7 +5,9 @@
 # refused (exit 2, the rate named) before anything is allocated; the same
 # file at 48 kHz is analysed. A file cut short (its data chunk declares 200
 # frames, 100 are there) is analysed with a warning that names the file and
-# both counts; the whole file gives none.
+# both counts; the whole file gives none. A 166-byte WAV whose LIST chunk
+# claims 4 GB (found by fulgur_fuzz_wav) kept libsndfile's header parser
+# busy for minutes: it is refused at once, the chunk named.
 set -u
 fulgur=$1
 tmp=$(mktemp -d)
@@ -36,5 +38,11 @@ rc=$?
 grep -q "warning: $tmp/cut.wav is truncated: 100 frames found, 200 declared" "$tmp/err" ||
     { echo "truncated file: no warning naming it and its frames: $(cat "$tmp/err")"; fail=1; }
 grep -q "0.002 s" "$tmp/out" || { echo "truncated file: not 100 frames long: $(cat "$tmp/out")"; fail=1; }
+printf 'RIFF\342\000\000\000WAVEfmt \020\000\000\000\003\000\002\000\200\273\000\000\000\334\005\000\010\000 \000LIST6\000\000\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\374\377\377\377\337\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377=\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\000INfulguRF64\045\377\377r/\377 ' > "$tmp/list.wav"
+timeout 20 "$fulgur" analyze "$tmp/list.wav" 2>"$tmp/err" >/dev/null
+rc=$?
+[ "$rc" -eq 2 ] || { echo "a LIST chunk past the end: exit $rc, expected 2 (124: it hung)"; fail=1; }
+grep -q "'LIST' chunk at byte 36 claims .* past the file's end (166 bytes)" "$tmp/err" ||
+    { echo "a LIST chunk past the end: no message naming it: $(cat "$tmp/err")"; fail=1; }
 [ "$fail" -eq 0 ] && echo "analyze: the header's rate and length are checked"
 exit "$fail"

@@ -32,13 +32,22 @@ typedef struct audio {
 
 static int read_wav(const char *path, audio *a)
 {
+    char err[512];
+    FILE *in = fopen(path, "rb");
+    if (in) {
+        int bad = wav_check_chunks(in, path, err, sizeof err);
+        fclose(in);
+        if (bad) {
+            fprintf(stderr, "fulgur: %s\n", err);
+            return -1;
+        }
+    }
     SF_INFO info = {0};
     SNDFILE *f = sf_open(path, SFM_READ, &info);
     if (!f) {
         fprintf(stderr, "fulgur: %s: %s\n", path, sf_strerror(NULL));
         return -1;
     }
-    char err[512];
     int rc = wav_read(f, &info, path, &a->wav, err, sizeof err);
     sf_close(f);
     if (rc != 0) {

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "calibration.h"
+#include "text_escape.h"
 
 /* Bytes per sample of the fixed-width encodings a WAV's data size can be
  * counted in; 0 for the others (compressed: the size says nothing simple). */
@@ -45,6 +46,44 @@ static uint64_t declared_frames(SNDFILE *f, const SF_INFO *info, uint64_t frames
         return frames;
     uint64_t declared = chunk.datalen / ((uint64_t)width * (uint64_t)info->channels);
     return declared > frames ? declared : frames;
+}
+
+static uint32_t chunk_size(const unsigned char *b, bool big_endian)
+{
+    return big_endian ? (uint32_t)b[0] << 24 | (uint32_t)b[1] << 16 | (uint32_t)b[2] << 8 | b[3]
+                      : (uint32_t)b[3] << 24 | (uint32_t)b[2] << 16 | (uint32_t)b[1] << 8 | b[0];
+}
+
+int wav_check_chunks(FILE *in, const char *name, char *err, size_t err_size)
+{
+    unsigned char head[12];
+    if (fseek(in, 0, SEEK_END) != 0)
+        return 0;
+    const long size = ftell(in);
+    if (size < 12 || fseek(in, 0, SEEK_SET) != 0 || fread(head, 1, 12, in) != 12)
+        return 0;
+    const bool rf64 = memcmp(head, "RF64", 4) == 0, big_endian = memcmp(head, "RIFX", 4) == 0;
+    if ((!rf64 && !big_endian && memcmp(head, "RIFF", 4) != 0) || memcmp(head + 8, "WAVE", 4) != 0)
+        return 0;
+    /* each step moves on by at least 8 bytes: the walk ends */
+    for (long at = 12; at + 8 <= size;) {
+        unsigned char chunk[8];
+        if (fseek(in, at, SEEK_SET) != 0 || fread(chunk, 1, 8, in) != 8)
+            return 0;
+        const uint32_t bytes = chunk_size(chunk + 4, big_endian);
+        if (memcmp(chunk, "data", 4) == 0 || (rf64 && bytes == UINT32_MAX))
+            return 0; /* the samples (cut short: wav_read says so), or ds64 sizes */
+        if ((uint64_t)bytes > (uint64_t)(size - at - 8)) {
+            char raw[5] = {0}, id[4 * 4 + 1];
+            memcpy(raw, chunk, 4);
+            text_escape(id, sizeof id, raw);
+            snprintf(err, err_size, "%s: its '%s' chunk at byte %ld claims %u bytes, past the "
+                                    "file's end (%ld bytes)", name, id, at, bytes, size);
+            return -1;
+        }
+        at += 8 + (long)bytes + (long)(bytes & 1u);
+    }
+    return 0;
 }
 
 int wav_read(SNDFILE *f, const SF_INFO *info, const char *name, wav_audio *out, char *err,

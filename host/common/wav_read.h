@@ -8,6 +8,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 /* Twice the highest rate of any audio interface or format in use (384 kHz):
  * the header's rate sizes analysis windows, so a rate no audio file has
@@ -24,6 +25,16 @@ typedef struct wav_audio {
     double full_scale_pa;   /* what a sample of 1.0 stands for */
     bool calibrated;        /* the file said so (else CALIBRATION_DEFAULT_PA) */
 } wav_audio;
+
+/* Walks the chunks of a RIFF, RIFX or RF64 file in (from its start; its
+ * position is left anywhere) and refuses one whose chunk other than "data"
+ * claims more bytes than the file holds: libsndfile 1.2's header parser
+ * can loop for minutes on such a chunk (a LIST claiming 4 GB in a 240-byte
+ * file, found by fulgur_fuzz_wav), so this runs before sf_open. A data
+ * chunk cut short is the truncated file wav_read reports; other files are
+ * not walked. Returns 0, or -1 with a message naming name in err.
+ * [main-thread] */
+int wav_check_chunks(FILE *in, const char *name, char *err, size_t err_size);
 
 /* Reads every frame of f (open for reading, info as sf_open filled it);
  * name is the file's name for messages. A WAV whose data chunk declares

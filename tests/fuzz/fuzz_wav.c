@@ -4,7 +4,9 @@
  * at least one channel, its calibration finite and positive and its
  * declared frames no fewer than those found; or refused with a message.
  * Corpus: corpus/fulgur_fuzz_wav/ (short float, PCM, RF64, calibrated and
- * truncated WAVs; tests/fuzz/write_seeds.py wrote them). */
+ * truncated WAVs; tests/fuzz/write_seeds.py wrote them). The chunk walk
+ * that guards libsndfile runs first, on the same bytes. */
+#define _POSIX_C_SOURCE 200809L /* fmemopen */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -56,6 +58,17 @@ static sf_count_t mem_tell(void *user)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+    char err[256] = "";
+    FILE *in = size ? fmemopen((void *)data, size, "rb") : NULL;
+    if (in) {
+        int bad = wav_check_chunks(in, "fuzz.wav", err, sizeof err);
+        fclose(in);
+        if (bad) {
+            if (strncmp(err, "fuzz.wav: ", 10) != 0)
+                abort();
+            return 0;
+        }
+    }
     SF_VIRTUAL_IO io = {mem_length, mem_seek, mem_read, mem_write, mem_tell};
     memory m = {data, (sf_count_t)size, 0};
     SF_INFO info = {0};
@@ -63,7 +76,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!f)
         return 0;
     wav_audio w;
-    char err[256] = "";
     if (wav_read(f, &info, "fuzz.wav", &w, err, sizeof err) == 0) {
         if (!w.samples || w.channels < 1 || w.rate_hz < 1 || w.rate_hz > WAV_READ_MAX_RATE_HZ ||
             w.declared_frames < w.frames || !isfinite(w.full_scale_pa) || w.full_scale_pa <= 0)
