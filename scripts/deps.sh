@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs, when missing, the Debian 12 packages fulgur needs to build, test
 # and plot. Sourced by demo.sh and test.sh; set FULGUR_DEPS_EXTRA to add more.
+# Run on its own (bash scripts/deps.sh), it installs them.
 fulgur_install_deps() {
   local pkgs=(cmake make gcc g++ pkg-config libcjson-dev libsndfile1-dev libsamplerate0-dev libmysofa-dev libfftw3-dev
               libpng-dev zlib1g-dev gnuplot-nox libcmocka-dev clang-14 libfuzzer-14-dev
@@ -26,3 +27,9 @@ fulgur_install_deps() {
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
+
+# run directly rather than sourced: install now
+if [ "${BASH_SOURCE[0]}" = "$0" ]; then
+  set -e
+  fulgur_install_deps
+fi
