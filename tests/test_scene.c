@@ -58,7 +58,7 @@ static const struct {
     {WITH_SPARK("\"smaple_rate\":48000,"),
      "smaple_rate: unknown key (known: sample_rate, channels, block, duration, seed, gain, "
      "speed_of_sound, temperature_c, humidity, pressure, propagation, listener, discharges, "
-     "random, camera, description, aero_objects, wind, fires)"},
+     "random, camera, description, aero_objects, wind, fires, layout)"},
     {WITH_SPARK("\"humidity\":0,"), "humidity: 0 is outside (0, 100]"},
     {WITH_SPARK("\"propagation\":{\"refraction\":{\"radius\":5000}},"),
      "propagation.refraction.radius: 5000 is outside 20000..200000"},

@@ -44,45 +44,26 @@ static const char notes[] =
     "pascals that full scale stands for, is then written into the WAV's comment\n"
     "(LIST/INFO ICMT, \"fulgur calibration: full scale = X Pa\") and printed, and\n"
     "fulgur analyze reads it back to pascals.\n"
-    "Layouts (docs/spatial.md): stereo (the default) is the scene's \"channels\", left and\n"
-    "right ears on a spherical head; ambisonics:ORDER writes AmbiX, (ORDER+1)^2 channels\n"
-    "in ACN order with SN3D normalisation (4, 9 or 16 for orders 1, 2, 3); binaural\n"
-    "writes left and right through the measured HRIRs of a SOFA file (--sofa, default\n"
-    "the MIT KEMAR set of Debian's libmysofa1), 64 frames late.\n"
+    "Layouts (docs/spatial.md; --layout, else the scene's \"layout\"): stereo (the default)\n"
+    "is the scene's \"channels\", left and right ears on a spherical head;\n"
+    "ambisonics:ORDER writes AmbiX, (ORDER+1)^2 channels in ACN order with SN3D\n"
+    "normalisation (4, 9 or 16 for orders 1, 2, 3); binaural writes left and right\n"
+    "through the measured HRIRs of a SOFA file (--sofa, else layout.sofa, default the\n"
+    "MIT KEMAR set of Debian's libmysofa1), 64 frames late.\n"
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
 
-/* --layout: the output layout every scene is rendered in. */
+/* --layout: the output layout every scene is rendered in, over the
+ * scenes' "layout". */
 typedef struct render_layout {
     bool given;
-    fg_layout layout;
-    uint32_t order;     /* ambisonics */
+    scene_layout layout;
 } render_layout;
 
 static int parse_layout(const char *text, void *value, char *why, size_t why_size)
 {
     render_layout *l = value;
-    static const char ambi[] = "ambisonics:";
-    if (strcmp(text, "stereo") == 0) {
-        *l = (render_layout){true, FG_LAYOUT_STEREO, 0};
-        return 0;
-    }
-    if (strcmp(text, "binaural") == 0) {
-        *l = (render_layout){true, FG_LAYOUT_BINAURAL, 0};
-        return 0;
-    }
-    if (strncmp(text, ambi, sizeof ambi - 1) == 0) {
-        const char *n = text + sizeof ambi - 1;
-        if (n[0] >= '0' + (int)FG_AMBISONIC_ORDER_MIN && n[0] <= '0' + (int)FG_AMBISONIC_ORDER_MAX &&
-            n[1] == '\0') {
-            *l = (render_layout){true, FG_LAYOUT_AMBISONICS, (uint32_t)(n[0] - '0')};
-            return 0;
-        }
-        snprintf(why, why_size, "ambisonic order \"%s\": expected 1, 2 or 3", n);
-        return -1;
-    }
-    snprintf(why, why_size, "\"%s\": expected stereo, binaural or ambisonics:ORDER (1..3)",
-             text);
-    return -1;
+    l->given = scene_layout_from_text(text, &l->layout, why, why_size) == 0;
+    return l->given ? 0 : -1;
 }
 
 /* The --set values, in order. */
@@ -422,25 +403,12 @@ static int load_scenes(const render_args *a, scene *scenes, sofa_hrirs *hrirs)
     for (size_t i = 0; i < a->scene_count; i++) {
         if (scene_load_with(a->scenes[i], a->sets.items, a->sets.count, &scenes[i], err,
                             sizeof err) == 0) {
-            if (a->layout.given) {
-                scenes[i].layout = a->layout.layout;
-                scenes[i].ambisonic_order = a->layout.order;
-                scenes[i].channels = a->layout.layout == FG_LAYOUT_AMBISONICS
-                                         ? (a->layout.order + 1) * (a->layout.order + 1)
-                                         : 2;
-            }
-            if (scenes[i].layout != FG_LAYOUT_BINAURAL)
+            if (a->layout.given)
+                scene_set_layout(&scenes[i], a->layout.layout);
+            if (scene_read_hrirs(&scenes[i], a->sofa, scenes[i].sample_rate_hz, &hrirs[i], err,
+                                 sizeof err) == 0)
                 continue;
-            if (sofa_hrirs_read(a->sofa ? a->sofa : SOFA_DEFAULT_FILE, scenes[i].sample_rate_hz,
-                                &hrirs[i], err, sizeof err) == 0) {
-                scenes[i].hrirs = &hrirs[i].set;
-                continue;
-            }
             scene_deinit(&scenes[i]);
-            fprintf(stderr, "fulgur: --sofa %s\n", err);
-            for (size_t k = 0; k < i; k++)
-                scene_deinit(&scenes[k]);
-            return -1;
         }
         if (a->scene_count > 1)
             fprintf(stderr, "fulgur: %s: %s\n", a->scenes[i], err);
@@ -579,12 +547,13 @@ static int parse_args(int argc, char **argv, render_args *a)
          .help = "a JSON line per file written: scene, seed, duration, peak,\n"
                  "calibration (- : stdout, the summary lines then to stderr)"},
         {"--layout", OPTION_PARSED, &a->layout, "LAYOUT", .parse = parse_layout,
-         .help = "stereo (default), binaural (HRIRs of --sofa) or\n"
-                 "ambisonics:ORDER, ORDER 1..3 (AmbiX: ACN order, SN3D; 4, 9\n"
-                 "or 16 channels)"},
+         .help = "stereo, binaural (HRIRs of --sofa) or ambisonics:ORDER,\n"
+                 "ORDER 1..3 (AmbiX: ACN order, SN3D; 4, 9 or 16 channels);\n"
+                 "over the scene's \"layout\" (default stereo)"},
         {"--sofa", OPTION_TEXT, &a->sofa, "FILE",
-         .help = "the SOFA file (AES69 SimpleFreeFieldHRIR) of --layout\n"
-                 "binaural (default " SOFA_DEFAULT_FILE ")"},
+         .help = "the SOFA file (AES69 SimpleFreeFieldHRIR) of the binaural\n"
+                 "layout, over the scene's layout.sofa (default\n"
+                 SOFA_DEFAULT_FILE ")"},
         {"--quiet", OPTION_FLAG, &a->quiet,
          .help = "no summary line, no progress line, no warning of clipping or\n"
                  "silence"},
@@ -637,7 +606,7 @@ int render_main(int argc, char **argv)
     }
     char err[512];
     int rc = parse_args(argc, argv, &a);
-    if (rc < 0 && a.sofa && !(a.layout.given && a.layout.layout == FG_LAYOUT_BINAURAL)) {
+    if (rc < 0 && a.sofa && a.layout.given && a.layout.layout.layout != FG_LAYOUT_BINAURAL) {
         fprintf(stderr, "fulgur render: --sofa %s: only with --layout binaural\n", a.sofa);
         rc = CLI_USAGE;
     }

@@ -287,6 +287,12 @@ int run_main(int argc, char **argv)
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_USAGE;
     }
+    if (s.layout != FG_LAYOUT_STEREO) { /* run's planes and sinks are stereo (issue 15) */
+        fprintf(stderr, "fulgur: %s: layout: fulgur run plays the stereo layout only (fulgur "
+                        "render writes the others)\n", opt.scene_path);
+        scene_deinit(&s);
+        return CLI_USAGE;
+    }
     int rc = CLI_RUNTIME;
     run_ctx *run = calloc(1, sizeof *run); /* large: the measurements' state */
     if (run) {

@@ -110,8 +110,9 @@ typedef struct scene_camera {
 typedef struct scene {
     double sample_rate_hz;
     uint32_t channels;         /* the layout's: 1 or 2 for stereo, (order + 1)^2 ambisonic */
-    fg_layout layout;          /* FG_LAYOUT_STEREO unless a host sets another (render --layout) */
-    uint32_t ambisonic_order;  /* FG_LAYOUT_AMBISONICS, FG_LAYOUT_BINAURAL: 1..3 */
+    fg_layout layout;          /* "layout".type, or a host's --layout; FG_LAYOUT_STEREO */
+    uint32_t ambisonic_order;  /* FG_LAYOUT_AMBISONICS: 1..3; 0 otherwise */
+    char *sofa_file;           /* "layout".sofa resolved (owned); NULL: the default */
     const fg_hrir_set *hrirs;  /* FG_LAYOUT_BINAURAL: borrowed from the host that read them */
     uint32_t block_frames;
     double duration_s;         /* 0: until every discharge has finished sounding */
@@ -179,6 +180,34 @@ int scene_build_discharge(scene *s, size_t index, char *err, size_t err_size);
 /* Frees the tree scene_build gave a generator's discharge, so that the
  * next build grows a new one; an explicit tree stays. */
 void scene_discharge_unbuild(scene_discharge *d);
+
+/* An output layout as a host names it (--layout) or the scene's "layout"
+ * block does. */
+typedef struct scene_layout {
+    fg_layout layout;
+    uint32_t order; /* FG_LAYOUT_AMBISONICS: 1..3 */
+} scene_layout;
+
+/* Reads "stereo", "binaural" or "ambisonics:ORDER" (ORDER 1..3). Returns
+ * 0, or -1 with why the text is none of them in why. */
+int scene_layout_from_text(const char *text, scene_layout *out, char *why, size_t why_size);
+
+/* Sets s's layout to l (a host's --layout overriding the scene's) with its
+ * channels: (order + 1)^2 ambisonic, 2 binaural and stereo (the scene's
+ * "layout" of type stereo keeps its "channels" instead). */
+void scene_set_layout(scene *s, scene_layout l);
+
+struct sofa_hrirs;
+
+/* A binaural s's HRIRs at rate_hz into *out (the caller frees it with
+ * sofa_hrirs_free after the engine is gone), and s->hrirs pointing at them:
+ * from sofa (a host's --sofa, may be NULL), else the scene's
+ * "layout".sofa, else SOFA_DEFAULT_FILE. Returns 0 (nothing read for
+ * another layout), or -1 with a message naming the option or key and the
+ * file: unreadable or a SOFA file the binaural layout cannot use
+ * (sofa_hrir.h), or sofa given for a layout other than binaural. */
+int scene_read_hrirs(scene *s, const char *sofa, double rate_hz, struct sofa_hrirs *out, char *err,
+                     size_t err_size);
 
 /* Frees what parse and build allocated; zeroes *s. NULL is a no-op. */
 void scene_deinit(scene *s);

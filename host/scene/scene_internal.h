@@ -31,6 +31,10 @@ struct scene_node_lists {
 /* "listener" (item may be NULL: the default pose) into s->poses. */
 int scene_parse_listener(const cJSON *item, scene *s, char *err, size_t err_size);
 
+/* "layout" of the document json (may be absent: stereo) into s's layout,
+ * order, channels and sofa_file (relative to dir). */
+int scene_parse_layout(const cJSON *json, const char *dir, scene *s, char *err, size_t err_size);
+
 /* "camera" (item may be NULL: none given) into s->camera. */
 int scene_parse_camera(const cJSON *item, scene *s, char *err, size_t err_size);
 

@@ -15,7 +15,7 @@
 static const char *const top_keys[] = {
     "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
     "temperature_c", "humidity", "pressure", "propagation", "listener", "discharges",
-    "random", "camera", "description", "aero_objects", "wind", "fires", NULL};
+    "random", "camera", "description", "aero_objects", "wind", "fires", "layout", NULL};
 
 static int syntax_error(const char *text, const char *at, const char *what, char *err,
                         size_t err_size)
@@ -219,6 +219,7 @@ int scene_parse_in(const char *text, size_t size, const char *const *sets, size_
     out->node_lists = &lists;
     if (json_check_keys(json, "", top_keys, err, err_size) == 0 &&
         parse_settings(json, out, err, err_size) == 0 &&
+        scene_parse_layout(json, dir, out, err, err_size) == 0 &&
         scene_parse_listener(cJSON_GetObjectItemCaseSensitive(json, "listener"), out, err,
                              err_size) == 0 &&
         parse_discharges(json, out, err, err_size) == 0 &&
@@ -349,6 +350,7 @@ void scene_deinit(scene *s)
     scene_aero_free(s);
     scene_fire_free(s);
     free(s->poses);
+    free(s->sofa_file);
     cJSON_Delete(s->json);
     memset(s, 0, sizeof *s);
 }

@@ -254,6 +254,12 @@ static int load_scene(const char *path, scene *s)
         fprintf(stderr, "fulgur view: %s\n", err);
         return -1;
     }
+    if (s->layout != FG_LAYOUT_STEREO) {
+        fprintf(stderr, "fulgur view: %s: layout: fulgur view plays the stereo layout only "
+                        "(fulgur render writes the others)\n", path);
+        scene_deinit(s);
+        return -1;
+    }
     if (s->discharge_count == 0) {
         fprintf(stderr, "fulgur view: %s: needs a discharge (the one space triggers)\n", path);
         scene_deinit(s);
