@@ -92,7 +92,8 @@ typedef struct scene_fire {
     fg_fire_sound_config sound; /* sample rate the scene's; the texture set by the render */
     scene_fire_point *path;     /* ascending times */
     size_t path_count;
-    double *flux_m3_s;          /* I at sound.sim_rate_hz, from the flux file */
+    double *flux_m3_s;          /* I at sound.sim_rate_hz, from the flux file
+                                   or the simulation */
     size_t flux_count;
 } scene_fire;
 

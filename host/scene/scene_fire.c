@@ -1,6 +1,7 @@
 /* "fires": the scene's fires (docs/scene-format.md), each a position or a
  * path of timed points, and a flux series file (the flame front's flux I,
- * m^3/s, at sim_rate) whose sound the render computes with fg_fire_feed:
+ * m^3/s, at sim_rate) or a flame simulation to run for it (scene_fire_sim.c),
+ * whose sound the render computes with fg_fire_feed:
  * p = dI/dt, the 30 Hz high-pass, then bandwidth extension, texture
  * synthesis (on the project's procedural training clip) or neither. */
 #include <math.h>
@@ -13,7 +14,7 @@
 
 static const char *const fire_keys[] = {"position", "path", "flux", "sim_rate", "extension",
                                         "alpha", "seed", "gain", "start", "air_absorption",
-                                        "ring", NULL};
+                                        "ring", "simulation", NULL};
 static const char *const point_keys[] = {"time", "position", NULL};
 static const char *const extensions[] = {"bwe", "texture", "low"};
 
@@ -175,8 +176,13 @@ static int parse_fire(const cJSON *item, const char *path, const char *dir, cons
                     err_size) ||
         json_number(item, path, "ring", (number_range){.lo = FG_FIRE_RING_MIN_S, .hi = FG_FIRE_RING_MAX_S},
                     &ring, err, err_size) ||
-        json_bool(item, path, "air_absorption", &air, err, err_size) ||
-        load_flux(item, path, dir, f, err, err_size))
+        json_bool(item, path, "air_absorption", &air, err, err_size))
+        return -1;
+    bool simulated = cJSON_GetObjectItemCaseSensitive(item, "simulation") != NULL;
+    if (simulated && cJSON_GetObjectItemCaseSensitive(item, "flux"))
+        return json_fail(err, err_size, path, "give a \"flux\" file or a \"simulation\", not both");
+    if (simulated ? scene_fire_simulate(item, path, sim, f, err, err_size)
+                  : load_flux(item, path, dir, f, err, err_size))
         return -1;
     f->sound = (fg_fire_sound_config){
         .sample_rate_hz = s->sample_rate_hz,

@@ -107,6 +107,11 @@ void scene_aero_free(scene *s);
  * relative to dir. */
 int scene_parse_fires(const cJSON *json, const char *dir, scene *s, char *err, size_t err_size);
 
+/* Runs item's "simulation" (the flame simulation, offline, at sim_rate_hz)
+ * into f's flux series (scene_fire_sim.c). */
+int scene_fire_simulate(const cJSON *item, const char *path, double sim_rate_hz,
+                        scene_fire *f, char *err, size_t err_size);
+
 /* Frees s->fires, their paths and flux series. */
 void scene_fire_free(scene *s);
 
