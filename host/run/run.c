@@ -51,6 +51,25 @@ static int post_aero_objects(run_ctx *run, int *rc, char *err, size_t err_size)
     return 0;
 }
 
+/* Posts every fire (each sounds from its own emit time) with its ring
+ * filled as far as it takes, before the threads start; the sim thread
+ * feeds and moves them after this. A fire's sound at the run's rate (a
+ * device's may not be the scene's) is made here. */
+static int post_fires(run_ctx *run, int *rc, char *err, size_t err_size)
+{
+    fg_result r = scene_fire_job_init(&run->fires, run->s, run->rate_hz, err, err_size);
+    if (r == FG_OK)
+        r = scene_fire_job_feed(&run->fires, run->engine, INFINITY, 0.0, 1.0 / run->opt.frame_hz,
+                                err, err_size);
+    if (r == FG_OK)
+        return 0;
+    bool room = r == FG_ERR_POOL_FULL || r == FG_ERR_QUEUE_FULL;
+    if (room)
+        snprintf(err + strlen(err), err_size - strlen(err), " (try --voices)");
+    *rc = room || r == FG_ERR_NO_MEMORY ? CLI_RUNTIME : CLI_USAGE;
+    return -1;
+}
+
 /* Allocates what the threads use; the engine last. */
 static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
 {
@@ -112,7 +131,8 @@ static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
         snprintf(err, err_size, "engine: %s", fg_result_str(r));
         return -1;
     }
-    return post_aero_objects(run, rc, err, err_size);
+    return post_aero_objects(run, rc, err, err_size) == 0 ? post_fires(run, rc, err, err_size)
+                                                          : -1;
 }
 
 static void tear_down(run_ctx *run)
@@ -120,6 +140,7 @@ static void tear_down(run_ctx *run)
     live_audio_close(run->live); /* no callback after this */
     run->live = NULL;
     fg_engine_destroy(run->engine);
+    scene_fire_job_deinit(&run->fires);
     run_gate_deinit(&run->gate);
     free(run->order);
     free(run->post_frame);

@@ -4,7 +4,8 @@
  *   frame thread  run_frame.c  the listener at 90 Hz: fg_engine_set_listener,
  *                              and each aero object's pose from its motion
  *   sim thread    run_sim.c    builds trees, fg_engine_post at their time,
- *                              retries a full pool/queue, fg_engine_collect
+ *                              retries a full pool/queue, fg_engine_collect;
+ *                              feeds each fire's sound and moves it
  *   audio thread  run_audio.c  a driver pulling fg_engine_render per block
  *
  * Two ways to keep time (run_gate.c):
@@ -20,9 +21,13 @@
  *              thread has set the pose of the latest 90 Hz tick on that
  *              clock. Equal scene and options give equal samples.
  *
- * Aero objects are posted by run.c before the threads start (each sounds
- * from its own emit time), so the first adoptions are theirs and the frame
- * thread knows their ids from its first tick.
+ * Aero objects and fires are posted by run.c before the threads start
+ * (each sounds from its own emit time), so the first adoptions are theirs
+ * and the frame thread knows the objects' ids from its first tick. The
+ * fires' job (scene_fire_render.h) is the sim thread's once they start:
+ * each pass it publishes the moving fires' poses at the 90 Hz ticks up to
+ * a tick past the block and pushes each stream as far as its ring takes,
+ * so in lock-step a block never starts short of its fire samples.
  *
  * Ownership: everything in run_ctx is allocated by run.c before the
  * threads start and freed after they are joined. Each measurement array is
@@ -41,6 +46,7 @@
 #include "common/options.h"
 #include "run_hist.h"
 #include "scene/scene.h"
+#include "scene/scene_fire_render.h"
 
 /* The sim thread's polling period in paced mode: part of the post path. */
 #define RUN_SIM_POLL_NS 500000
@@ -92,7 +98,7 @@ typedef struct run_ctx {
     uint64_t start_ns;        /* CLOCK_MONOTONIC when the threads start */
     run_gate gate;
     atomic_bool stop;
-    atomic_bool sim_done;     /* every discharge posted or dropped */
+    atomic_bool sim_done;     /* every discharge posted or dropped, every fire over */
 
     /* sim thread's */
     size_t posts;             /* successful posts: the first `posts` of each array */
@@ -104,6 +110,8 @@ typedef struct run_ctx {
     run_hist post_call;       /* fg_engine_post's own duration */
     char sim_error[512];      /* a build or post error ends the run */
     bool sim_error_in_scene;  /* ... and it was the scene's fault (a generator's) */
+    scene_fire_job fires;     /* posted by run.c, then fed and moved here */
+    uint64_t fire_pose_tick;  /* the next 90 Hz tick whose fire poses are due */
 
     /* audio thread's (or the live device's callback's) */
     audio_driver driver;

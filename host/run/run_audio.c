@@ -10,14 +10,14 @@
 
 /* Notes the discharges adopted by the block that started at frames at
  * wall time t_ns: adoption is in post order (one ring), the aero objects
- * (posted before the threads started) first, so the k-th discharge
- * adopted is the k-th posted. */
+ * and fires (posted before the threads started) first, so the k-th
+ * discharge adopted is the k-th posted. */
 static void note_adoptions(run_ctx *run, uint64_t frames, uint64_t t_ns)
 {
     fg_engine_report stats;
     fg_engine_get_report(run->engine, &stats);
-    const uint64_t aeros = run->s->aero_count;
-    uint64_t discharges = stats.adopted > aeros ? stats.adopted - aeros : 0;
+    const uint64_t first = run->s->aero_count + run->s->fire_count;
+    uint64_t discharges = stats.adopted > first ? stats.adopted - first : 0;
     for (; run->adopted < discharges; run->adopted++) {
         if (run->adopted >= run->s->discharge_count)
             continue; /* cannot happen: one post per discharge */

@@ -141,11 +141,12 @@ char *run_report_json(const run_ctx *run, double wall_s)
         hist_spread(fl, "jitter_ms", &run->jitter, 1e3);
     else
         cJSON_AddNullToObject(fl, "jitter_ms"); /* ticks follow the engine clock */
-    /* the aero objects were posted (and adopted) first, all of them */
+    /* the aero objects and fires were posted (and adopted) first, all of them */
     const double aeros = (double)run->s->aero_count;
+    const double fires = (double)run->s->fire_count;
     cJSON *d = cJSON_AddObjectToObject(root, "discharges");
     cJSON_AddNumberToObject(d, "scheduled", (double)run->s->discharge_count);
-    cJSON_AddNumberToObject(d, "posted", (double)st.posted - aeros);
+    cJSON_AddNumberToObject(d, "posted", (double)st.posted - aeros - fires);
     cJSON_AddNumberToObject(d, "refused_posts", (double)run->refused);
     cJSON_AddNumberToObject(d, "dropped", (double)run->dropped);
     cJSON_AddNumberToObject(d, "adopted", (double)run->adopted);
@@ -155,6 +156,9 @@ char *run_report_json(const run_ctx *run, double wall_s)
     cJSON *ao = cJSON_AddObjectToObject(root, "aero_objects");
     cJSON_AddNumberToObject(ao, "count", aeros);
     cJSON_AddNumberToObject(ao, "poses_set", (double)run->aero_poses_set);
+    cJSON *fi = cJSON_AddObjectToObject(root, "fires");
+    cJSON_AddNumberToObject(fi, "count", fires);
+    cJSON_AddNumberToObject(fi, "underrun_frames", (double)run->fires.underrun_frames);
     cJSON *e = cJSON_AddObjectToObject(root, "engine");
     cJSON_AddNumberToObject(e, "blocks", (double)st.blocks);
     cJSON_AddNumberToObject(e, "blocks_over_budget", (double)st.blocks_over_budget);

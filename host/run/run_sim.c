@@ -7,7 +7,13 @@
  * wait for the next block: "late" sound is what a source closer than that
  * path times c loses. A post refused for a full pool or queue is retried
  * after the next block's collect, for RUN_RETRY_LIMIT_S, then dropped; both
- * are counted in the report. */
+ * are counted in the report.
+ *
+ * The fires (posted by run.c) are fed here too: each pass publishes the
+ * moving ones' poses up to a tick past the coming block and pushes every
+ * stream as far as its ring takes; the sim thread is done once every
+ * discharge is posted or dropped and every fire's voice is over. */
+#include <math.h>
 #include <stdio.h>
 
 #include "run_gate.h"
@@ -57,6 +63,24 @@ static int post_due(run_ctx *run, uint64_t now, size_t *next)
     return 0;
 }
 
+/* Publishes the fires' poses at the 90 Hz ticks up to RUN_POSE_LEAD_TICKS
+ * past the block starting at engine frame now, then pushes their sound.
+ * Returns -1 on an error that ends the run (message in run->sim_error). */
+static int feed_fires(run_ctx *run, uint64_t now)
+{
+    double period = 1.0 / run->opt.frame_hz;
+    double until = (double)(now + run->block_frames) / run->rate_hz + RUN_POSE_LEAD_TICKS * period;
+    fg_result r = FG_OK;
+    for (double t; r == FG_OK && (t = (double)run->fire_pose_tick * period) <= until;
+         run->fire_pose_tick++)
+        r = scene_fire_job_poses(&run->fires, run->engine, t, run->sim_error,
+                                 sizeof run->sim_error);
+    if (r == FG_OK)
+        r = scene_fire_job_feed(&run->fires, run->engine, INFINITY, 0.0, period, run->sim_error,
+                                sizeof run->sim_error);
+    return r == FG_OK ? 0 : -1;
+}
+
 void *run_sim_thread(void *arg)
 {
     run_ctx *run = arg;
@@ -66,11 +90,11 @@ void *run_sim_thread(void *arg)
         uint64_t now = fg_engine_frames(run->engine);
         fg_engine_collect(run->engine);
         if (!done) {
-            if (post_due(run, now, &next) != 0) {
+            if (post_due(run, now, &next) != 0 || feed_fires(run, now) != 0) {
                 run_stop(run);
                 break;
             }
-            done = next == run->s->discharge_count;
+            done = next == run->s->discharge_count && scene_fire_job_over(&run->fires);
             if (done)
                 atomic_store(&run->sim_done, true);
             run_publish_sim(run, done ? UINT64_MAX : now);

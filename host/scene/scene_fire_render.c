@@ -5,7 +5,8 @@
 
 #include "scene_fire_render.h"
 
-fg_result scene_fire_job_init(scene_fire_job *job, const scene *s, char *err, size_t err_size)
+fg_result scene_fire_job_init(scene_fire_job *job, const scene *s, double rate_hz, char *err,
+                              size_t err_size)
 {
     *job = (scene_fire_job){.s = s};
     size_t n = s->fire_count;
@@ -23,16 +24,18 @@ fg_result scene_fire_job_init(scene_fire_job *job, const scene *s, char *err, si
     }
     for (size_t i = 0; i < n; i++) {
         fg_fire_sound_config sc = s->fires[i].sound;
+        sc.sample_rate_hz = rate_hz;
         fg_result r;
         if (sc.extension == FG_FIRE_TEXTURE && !job->texture &&
-            (r = fg_fire_texture_create_default(s->sample_rate_hz, &job->texture)) != FG_OK) {
+            (r = fg_fire_texture_create_default(rate_hz, &job->texture)) != FG_OK) {
             snprintf(err, err_size, "fires[%zu]: training the default texture at %.0f Hz: %s", i,
-                     s->sample_rate_hz, fg_result_str(r));
+                     rate_hz, fg_result_str(r));
             return r;
         }
         sc.texture = sc.extension == FG_FIRE_TEXTURE ? job->texture : NULL;
         if ((r = fg_fire_feed_create(&sc, 0, &job->feeds[i])) != FG_OK) {
-            snprintf(err, err_size, "fires[%zu]: its sound: %s", i, fg_result_str(r));
+            snprintf(err, err_size, "fires[%zu]: its sound at %.0f Hz: %s", i, rate_hz,
+                     fg_result_str(r));
             return r;
         }
     }
@@ -51,6 +54,14 @@ void scene_fire_job_deinit(scene_fire_job *job)
     free(job->done);
     free(job->underruns);
     *job = (scene_fire_job){0};
+}
+
+bool scene_fire_job_over(const scene_fire_job *job)
+{
+    for (size_t i = 0; i < job->s->fire_count; i++)
+        if (!job->done[i])
+            return false;
+    return true;
 }
 
 static fg_result publish(scene_fire_job *job, fg_engine *e, size_t i, double t_s, char *err,

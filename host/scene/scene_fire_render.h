@@ -24,10 +24,12 @@ typedef struct scene_fire_job {
     uint64_t underrun_frames;  /* summed */
 } scene_fire_job;
 
-/* Makes the feeds (and the texture) for s's fires. Returns FG_OK, or
- * FG_ERR_NO_MEMORY / the fire sound's error with a message in err.
- * [main-thread] */
-fg_result scene_fire_job_init(scene_fire_job *job, const scene *s, char *err, size_t err_size);
+/* Makes the feeds (and the texture) for s's fires, their sound at
+ * rate_hz (the scene's, or the one fulgur run's device runs at). Returns
+ * FG_OK, or FG_ERR_NO_MEMORY / the fire sound's error with a message in
+ * err. [main-thread] */
+fg_result scene_fire_job_init(scene_fire_job *job, const scene *s, double rate_hz, char *err,
+                              size_t err_size);
 
 /* Frees what init made; the engine must be destroyed first. */
 void scene_fire_job_deinit(scene_fire_job *job);
@@ -39,6 +41,10 @@ void scene_fire_job_deinit(scene_fire_job *job);
 fg_result scene_fire_job_feed(scene_fire_job *job, fg_engine *engine, double horizon_s,
                               double poses_until_s, double pose_period_s, char *err,
                               size_t err_size);
+
+/* Whether every fire's voice has finished and been collected (as the
+ * feed and the poses find out): nothing more to feed or move. */
+bool scene_fire_job_over(const scene_fire_job *job);
 
 /* Publishes every live moving fire's pose at t_s. */
 fg_result scene_fire_job_poses(scene_fire_job *job, fg_engine *engine, double t_s, char *err,

@@ -64,7 +64,7 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
         snprintf(err, err_size, "out of memory");
         return FG_ERR_NO_MEMORY;
     }
-    return scene_fire_job_init(&job->fires, s, err, err_size);
+    return scene_fire_job_init(&job->fires, s, s->sample_rate_hz, err, err_size);
 }
 
 /* Publishes aero object i's pose at t, unless it has finished. */
