@@ -32,6 +32,20 @@ def test_dict_scene_gives_the_cli_samples(path, tmp_path):
     assert np.abs(samples).max() > 1e-3  # not silence
 
 
+@pytest.mark.parametrize("name", ["campfire.json", "torch.json"])
+def test_fire_scene_gives_the_cli_samples(name, tmp_path):
+    """A scene of fires (its flux file beside it) renders fulgur render's
+    bytes: the fire voices, their feeds and a moving fire's poses run in
+    the one render loop."""
+    path = example(os.path.join("fire", name))
+    rc, err = cli_render(path, str(tmp_path / "cli.wav"), "--set", "duration=2")
+    assert rc == 0, err
+    data = wav_data(tmp_path / "cli.wav")[4]
+    samples, _ = fulgur.render(path, overrides={"duration": 2})
+    assert samples.tobytes() == data
+    assert np.sqrt(np.mean(samples.astype(np.float64) ** 2)) > 1e-4  # the fire is heard
+
+
 def test_path_and_overrides_as_set(tmp_path):
     """A path with overrides gives what fulgur render --set gives."""
     path = example("lightning_3km.json")
