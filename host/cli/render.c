@@ -52,20 +52,6 @@ static const char notes[] =
     "MIT KEMAR set of Debian's libmysofa1), 64 frames late.\n"
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (the message names the path).\n";
 
-/* --layout: the output layout every scene is rendered in, over the
- * scenes' "layout". */
-typedef struct render_layout {
-    bool given;
-    scene_layout layout;
-} render_layout;
-
-static int parse_layout(const char *text, void *value, char *why, size_t why_size)
-{
-    render_layout *l = value;
-    l->given = scene_layout_from_text(text, &l->layout, why, why_size) == 0;
-    return l->given ? 0 : -1;
-}
-
 /* The --set values, in order. */
 typedef struct set_list {
     const char *items[MAX_SETS];
@@ -391,7 +377,7 @@ typedef struct render_args {
     const char *manifest;
     bool quiet;
     set_list sets;
-    render_layout layout;
+    scene_layout_choice layout; /* every scene's, over their "layout" */
     const char *sofa;
 } render_args;
 
@@ -546,7 +532,7 @@ static int parse_args(int argc, char **argv, render_args *a)
         {"--manifest", OPTION_TEXT, &a->manifest, "FILE",
          .help = "a JSON line per file written: scene, seed, duration, peak,\n"
                  "calibration (- : stdout, the summary lines then to stderr)"},
-        {"--layout", OPTION_PARSED, &a->layout, "LAYOUT", .parse = parse_layout,
+        {"--layout", OPTION_PARSED, &a->layout, "LAYOUT", .parse = scene_layout_option,
          .help = "stereo, binaural (HRIRs of --sofa) or ambisonics:ORDER,\n"
                  "ORDER 1..3 (AmbiX: ACN order, SN3D; 4, 9 or 16 channels);\n"
                  "over the scene's \"layout\" (default stereo)"},

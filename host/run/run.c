@@ -92,20 +92,25 @@ static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
     run->adopt_ns = calloc(n, sizeof *run->adopt_ns);
     run->aero_ids = calloc(s->aero_count + 1, sizeof *run->aero_ids);
     run->aero_done = calloc(s->aero_count + 1, sizeof *run->aero_done);
+    bool planes = true;
     for (uint32_t ch = 0; ch < s->channels; ch++)
-        run->planes[ch] = calloc(run->block_frames, sizeof(float));
+        planes &= (run->planes[ch] = calloc(run->block_frames, sizeof(float))) != NULL;
     /* callback and post call to 1 us up to 50 ms; jitter to 10 us up to 1 s */
     int hists = run_hist_init(&run->callback, 1e-6, 50000) |
                 run_hist_init(&run->post_call, 1e-6, 50000) |
                 run_hist_init(&run->jitter, 1e-5, 100000);
     if (!run->order || !run->post_frame || !run->post_ns || !run->post_event_s ||
-        !run->adopt_frame || !run->adopt_ns || !run->aero_ids || !run->aero_done || !run->planes[0] ||
-        (s->channels == 2 && !run->planes[1]) || hists) {
+        !run->adopt_frame || !run->adopt_ns || !run->aero_ids || !run->aero_done || !planes ||
+        hists) {
         snprintf(err, err_size, "out of memory");
         return -1;
     }
     if (run_gate_init(&run->gate) != 0) {
         snprintf(err, err_size, "cannot create the lock-step gate");
+        return -1;
+    }
+    if (scene_read_hrirs(run->s, run->opt.sofa, run->rate_hz, &run->hrirs, err, err_size) != 0) {
+        *rc = CLI_USAGE;
         return -1;
     }
     fg_engine_config cfg;
@@ -141,6 +146,7 @@ static void tear_down(run_ctx *run)
     run->live = NULL;
     fg_engine_destroy(run->engine);
     scene_fire_job_deinit(&run->fires);
+    sofa_hrirs_free(&run->hrirs);
     run_gate_deinit(&run->gate);
     free(run->order);
     free(run->post_frame);
@@ -150,8 +156,8 @@ static void tear_down(run_ctx *run)
     free(run->adopt_ns);
     free(run->aero_ids);
     free(run->aero_done);
-    free(run->planes[0]);
-    free(run->planes[1]);
+    for (uint32_t ch = 0; ch < SCENE_MAX_CHANNELS; ch++)
+        free(run->planes[ch]);
     run_hist_deinit(&run->callback);
     run_hist_deinit(&run->post_call);
     run_hist_deinit(&run->jitter);
@@ -308,9 +314,12 @@ int run_main(int argc, char **argv)
         fprintf(stderr, "fulgur: %s\n", err);
         return CLI_USAGE;
     }
-    if (s.layout != FG_LAYOUT_STEREO) { /* run's planes and sinks are stereo (issue 15) */
-        fprintf(stderr, "fulgur: %s: layout: fulgur run plays the stereo layout only (fulgur "
-                        "render writes the others)\n", opt.scene_path);
+    if (opt.layout.given)
+        scene_set_layout(&s, opt.layout.layout);
+    if (s.channels > 2 && audio_output_is_live(&opt.audio)) { /* live_audio.h: 1 or 2 */
+        fprintf(stderr, "fulgur: %s: layout: ambisonics of order %u is %u channels and the live "
+                        "devices play 1 or 2: use --audio wav:FILE or raw:-\n",
+                opt.scene_path, (unsigned)s.ambisonic_order, (unsigned)s.channels);
         scene_deinit(&s);
         return CLI_USAGE;
     }

@@ -44,6 +44,7 @@
 #include "common/audio_driver.h"
 #include "common/live_audio.h"
 #include "common/options.h"
+#include "common/sofa_hrir.h"
 #include "run_hist.h"
 #include "scene/scene.h"
 #include "scene/scene_fire_render.h"
@@ -73,6 +74,8 @@ typedef struct run_options {
     uint32_t voices;          /* 0: the engine's default (64) */
     uint32_t segments;        /* 0: the engine's default, or the explicit trees' total */
     const char *report_path;  /* NULL: stdout, or stderr when the audio is on stdout */
+    scene_layout_choice layout; /* over the scene's "layout" */
+    const char *sofa;         /* the binaural layout's HRIRs, over layout.sofa */
 } run_options;
 
 /* The lock-step handshake: a mutex and condition over three clocks. */
@@ -118,7 +121,7 @@ typedef struct run_ctx {
     live_audio *live;         /* --audio jack or portaudio: NULL otherwise */
     char live_description[160]; /* what it was, for the report */
     uint64_t live_xruns;      /* the device's over- and underruns, once closed */
-    float *planes[2];
+    float *planes[SCENE_MAX_CHANNELS]; /* the layout's channels */
     uint64_t adopted;         /* voices seen adopted */
     uint64_t *adopt_frame;    /* block start, by post order */
     uint64_t *adopt_ns;       /* wall clock at that block's render call */
@@ -130,6 +133,7 @@ typedef struct run_ctx {
 
     /* set before the threads start */
     fg_voice_id *aero_ids;    /* per aero object, posted in scene order */
+    sofa_hrirs hrirs;         /* the binaural layout's, read at the run's rate */
 
     /* frame thread's */
     bool *aero_done;          /* collected: its poses are no longer set */

@@ -8,6 +8,9 @@ static const char about[] =
 
 static const char notes[] =
     "Plays live: fulgur run SCENE --audio raw:- | aplay -f FLOAT_LE -c2 -r48000\n"
+    "Layouts (docs/spatial.md; --layout, else the scene's \"layout\"): stereo, binaural\n"
+    "(two channels on any device), ambisonics:ORDER (AmbiX, (ORDER+1)^2 channels, to\n"
+    "wav: and raw: only: the live devices open 1 or 2).\n"
     "Prints a JSON report (timing, post-to-adoption latency, late events) to stdout,\n"
     "to stderr with raw:-, or to --report FILE.\n"
     "Exit: 0 done, 1 runtime error, 2 bad arguments or scene (a generator's error is\n"
@@ -41,6 +44,13 @@ options_result run_parse_options(int argc, char **argv, run_options *o)
                  "together (default: 131072, or the explicit trees' total\n"
                  "when larger; generated trees are built during the run)",
          .range = {.lo = 1, .hi = RUN_MAX_SEGMENTS}},
+        {"--layout", OPTION_PARSED, &o->layout, "LAYOUT", .parse = scene_layout_option,
+         .help = "stereo, binaural (HRIRs of --sofa) or ambisonics:ORDER (1..3:\n"
+                 "AmbiX, 4, 9 or 16 channels: wav: and raw: only), over the\n"
+                 "scene's \"layout\" (default stereo)"},
+        {"--sofa", OPTION_TEXT, &o->sofa, "FILE",
+         .help = "the binaural layout's SOFA file, over the scene's\n"
+                 "layout.sofa (default " SOFA_DEFAULT_FILE ")"},
         {"--frame-rate", OPTION_NUMBER, &o->frame_hz, "HZ",
          .help = "the frame thread's rate (default 90; at least 10: a head pose\n"
                  "older than 100 ms, and the last tick's wait, would hold the run)",

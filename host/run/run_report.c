@@ -126,6 +126,11 @@ char *run_report_json(const run_ctx *run, double wall_s)
     cJSON_AddBoolToObject(root, "paced", run->paced);
     cJSON_AddNumberToObject(root, "sample_rate_hz", run->rate_hz);
     cJSON_AddNumberToObject(root, "block_frames", run->block_frames);
+    cJSON *lo = cJSON_AddObjectToObject(root, "layout");
+    cJSON_AddStringToObject(lo, "type", scene_layout_name(run->s->layout));
+    if (run->s->layout == FG_LAYOUT_AMBISONICS)
+        cJSON_AddNumberToObject(lo, "order", run->s->ambisonic_order);
+    cJSON_AddNumberToObject(lo, "channels", run->s->channels);
     cJSON_AddNumberToObject(root, "seconds", (double)run->frames_out / run->rate_hz);
     cJSON_AddNumberToObject(root, "wall_s", wall_s);
     add_callback(root, run);

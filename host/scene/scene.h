@@ -193,6 +193,20 @@ typedef struct scene_layout {
  * 0, or -1 with why the text is none of them in why. */
 int scene_layout_from_text(const char *text, scene_layout *out, char *why, size_t why_size);
 
+/* "stereo", "ambisonics" or "binaural": the layout's name in a scene's
+ * layout.type. */
+const char *scene_layout_name(fg_layout layout);
+
+/* A host's --layout: whether it was given, and the layout. */
+typedef struct scene_layout_choice {
+    bool given;
+    scene_layout layout;
+} scene_layout_choice;
+
+/* --layout's parser for common/options.h (OPTION_PARSED): value is a
+ * scene_layout_choice; the text as scene_layout_from_text reads it. */
+int scene_layout_option(const char *text, void *value, char *why, size_t why_size);
+
 /* Sets s's layout to l (a host's --layout overriding the scene's) with its
  * channels: (order + 1)^2 ambisonic, 2 binaural and stereo (the scene's
  * "layout" of type stereo keeps its "channels" instead). */

@@ -12,6 +12,11 @@
 static const char *const layout_names[] = {"stereo", "ambisonics", "binaural"};
 static const char *const layout_keys[] = {"type", "order", "sofa", NULL};
 
+const char *scene_layout_name(fg_layout layout)
+{
+    return layout_names[layout];
+}
+
 void scene_set_layout(scene *s, scene_layout l)
 {
     s->layout = l.layout;
@@ -90,6 +95,13 @@ int scene_layout_from_text(const char *text, scene_layout *out, char *why, size_
     snprintf(why, why_size, "\"%s\": expected stereo, binaural or ambisonics:ORDER (1..3)",
              text);
     return -1;
+}
+
+int scene_layout_option(const char *text, void *value, char *why, size_t why_size)
+{
+    scene_layout_choice *c = value;
+    c->given = scene_layout_from_text(text, &c->layout, why, why_size) == 0;
+    return c->given ? 0 : -1;
 }
 
 int scene_read_hrirs(scene *s, const char *sofa, double rate_hz, sofa_hrirs *out, char *err,
