@@ -92,9 +92,12 @@ typedef struct scene_fire {
     fg_fire_sound_config sound; /* sample rate the scene's; the texture set by the render */
     scene_fire_point *path;     /* ascending times */
     size_t path_count;
-    double *flux_m3_s;          /* I at sound.sim_rate_hz, from the flux file
-                                   or the simulation */
-    size_t flux_count;
+    double *flux_m3_s;          /* I at sound.sim_rate_hz, from the flux file or the
+                                   simulation run at load; NULL for a live one */
+    size_t flux_count;          /* its steps (a live simulation's to come) */
+    bool live;                  /* "simulation" with "live": run step by step as the
+                                   fire sounds (scene_fire_render.h), from sim */
+    fg_flame_sim_config sim;
 } scene_fire;
 
 /* What the picture looks through (the "camera" block). */

@@ -18,9 +18,26 @@ fg_result scene_fire_job_init(scene_fire_job *job, const scene *s, double rate_h
     job->closed = calloc(n, sizeof *job->closed);
     job->done = calloc(n, sizeof *job->done);
     job->underruns = calloc(n, sizeof *job->underruns);
-    if (!job->feeds || !job->ids || !job->given || !job->closed || !job->done || !job->underruns) {
+    job->sims = calloc(n, sizeof *job->sims);
+    job->live_flux = calloc(n, sizeof *job->live_flux);
+    job->made = calloc(n, sizeof *job->made);
+    if (!job->feeds || !job->ids || !job->given || !job->closed || !job->done || !job->underruns ||
+        !job->sims || !job->live_flux || !job->made) {
         snprintf(err, err_size, "fires: out of memory");
         return FG_ERR_NO_MEMORY;
+    }
+    for (size_t i = 0; i < n; i++) {
+        const scene_fire *f = &s->fires[i];
+        job->made[i] = f->live ? 0 : f->flux_count;
+        fg_result r;
+        if (f->live && (r = fg_flame_sim_create(&f->sim, &job->sims[i])) != FG_OK) {
+            snprintf(err, err_size, "fires[%zu].simulation: %s", i, fg_result_str(r));
+            return r;
+        }
+        if (f->live && !(job->live_flux[i] = malloc(f->flux_count * sizeof(double)))) {
+            snprintf(err, err_size, "fires[%zu].simulation: out of memory", i);
+            return FG_ERR_NO_MEMORY;
+        }
     }
     for (size_t i = 0; i < n; i++) {
         fg_fire_sound_config sc = s->fires[i].sound;
@@ -46,6 +63,13 @@ void scene_fire_job_deinit(scene_fire_job *job)
 {
     for (size_t i = 0; job->feeds && i < job->s->fire_count; i++)
         fg_fire_feed_destroy(job->feeds[i]);
+    for (size_t i = 0; job->sims && i < job->s->fire_count; i++)
+        fg_flame_sim_destroy(job->sims[i]);
+    for (size_t i = 0; job->live_flux && i < job->s->fire_count; i++)
+        free(job->live_flux[i]);
+    free(job->sims);
+    free(job->live_flux);
+    free(job->made);
     fg_fire_texture_destroy(job->texture);
     free(job->feeds);
     free(job->ids);
@@ -95,7 +119,23 @@ fg_result scene_fire_job_poses(scene_fire_job *job, fg_engine *e, double t_s, ch
     return FG_OK;
 }
 
-/* Pushes fire i's sound as far as its ring takes; closes it once spent. */
+/* One step of fire i's live simulation: its flux appended. */
+static fg_result step_live(scene_fire_job *job, size_t i, char *err, size_t err_size)
+{
+    fg_flame_flux flux;
+    fg_result r = fg_flame_sim_step(job->sims[i], &flux);
+    if (r != FG_OK) {
+        snprintf(err, err_size, "fires[%zu].simulation: the flame simulation failed at step %zu: %s",
+                 i, job->made[i], fg_result_str(r));
+        return r;
+    }
+    job->live_flux[i][job->made[i]++] = flux.flux_m3_s;
+    return FG_OK;
+}
+
+/* Pushes fire i's sound as far as its ring takes, a live simulation
+ * stepped whenever the ring has taken all there is; closes it once
+ * spent. */
 static fg_result push(scene_fire_job *job, fg_engine *e, size_t i, char *err, size_t err_size)
 {
     const scene_fire *f = &job->s->fires[i];
@@ -108,13 +148,25 @@ static fg_result push(scene_fire_job *job, fg_engine *e, size_t i, char *err, si
     job->underruns[i] = rep.underrun_frames;
     if (job->closed[i])
         return FG_OK;
+    const double *flux = job->sims[i] ? job->live_flux[i] : f->flux_m3_s;
     fg_result r = FG_OK;
-    size_t taken = 0;
-    do {
-        r = fg_fire_feed_push(job->feeds[i], e, job->ids[i], f->flux_m3_s + job->given[i],
-                              f->flux_count - job->given[i], &taken);
+    for (;;) {
+        size_t taken = 0;
+        r = fg_fire_feed_push(job->feeds[i], e, job->ids[i], flux + job->given[i],
+                              job->made[i] - job->given[i], &taken);
         job->given[i] += taken;
-    } while (r == FG_OK && taken > 0 && job->given[i] < f->flux_count);
+        if (r != FG_OK || job->given[i] == f->flux_count)
+            break;
+        if (job->given[i] < job->made[i]) {
+            if (taken > 0)
+                continue;
+            break; /* the ring is full */
+        }
+        if (!job->sims[i] || fg_fire_feed_pending(job->feeds[i]) > 0)
+            break; /* the ring took the steps but not yet all their sound */
+        if ((r = step_live(job, i, err, err_size)) != FG_OK)
+            return r;
+    }
     if (r == FG_OK && job->given[i] == f->flux_count)
         r = fg_fire_feed_finish(job->feeds[i], e, job->ids[i], &job->closed[i]);
     if (r != FG_OK)

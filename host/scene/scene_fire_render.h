@@ -1,8 +1,10 @@
-/* The fires of a scene in the render loop (scene_render.c): each posted
- * as a fire voice at its start, its flux turned into sound by an
- * fg_fire_feed on the render's thread (the sim thread) and pushed as far
- * ahead as its ring takes, closed when its flux is spent; a moving fire's
- * poses published with the listener's. */
+/* The fires of a scene in the render loop (scene_render.c) and in fulgur
+ * run: each posted as a fire voice at its start, its flux turned into
+ * sound by an fg_fire_feed on the render's thread (the sim thread) and
+ * pushed as far ahead as its ring takes, closed when its flux is spent; a
+ * moving fire's poses published with the listener's. A live simulation
+ * ("live": true) is stepped there too, one step whenever the feed has
+ * given the ring everything, so it runs no further ahead than the ring. */
 #ifndef HOST_SCENE_SCENE_FIRE_RENDER_H
 #define HOST_SCENE_SCENE_FIRE_RENDER_H
 
@@ -18,6 +20,9 @@ typedef struct scene_fire_job {
     fg_fire_feed **feeds;
     fg_voice_id *ids;          /* 0 until posted */
     size_t *given;             /* flux steps taken by the feed */
+    fg_flame_sim **sims;       /* a live fire's simulation; NULL for the others */
+    double **live_flux;        /* its flux so far (room for all its steps) */
+    size_t *made;              /* flux steps there are: flux_count, a live one's so far */
     bool *closed, *done;       /* stream closed; voice collected */
     uint64_t *underruns;       /* each fire's last reported underrun frames */
     size_t posted;

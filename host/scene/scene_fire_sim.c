@@ -1,11 +1,14 @@
 /* A fire's "simulation" (docs/scene-format.md, fires): instead of a flux
  * file, the scene names an emitter preset, a grid and a seed, and the
- * scene's load runs the flame simulation (fulgur/flame.h) offline for the
- * fire's duration, at its sim_rate, to make the flux series the rest of
- * the chain (fg_fire_feed) plays. Offline because the simulation is slower
- * than real time at 360 Hz (bench/results/flame.md: 16^3 runs at 0.80x,
- * 24^3 at 0.21x on one core): the render waits for it before the first
- * block. */
+ * flame simulation (fulgur/flame.h) makes the flux series the rest of the
+ * chain (fg_fire_feed) plays, at the fire's sim_rate for its duration.
+ * By default the scene's load runs it offline, because grids of 16^3 and
+ * up are slower than real time at 360 Hz (bench/results/flame.md: 16^3
+ * runs at 0.80x, 24^3 at 0.21x on one core): the render waits for it
+ * before the first block. With "live" the configuration is only checked
+ * here, and the render's or run's sim thread steps it as the fire sounds
+ * (scene_fire_render.c), which small grids keep up with (8^3 4.2x, 12^3
+ * 1.3x real time). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,7 +17,7 @@
 #include "fulgur/flame.h"
 #include "scene_internal.h"
 
-static const char *const sim_keys[] = {"emitter", "cells", "seconds", "seed", NULL};
+static const char *const sim_keys[] = {"emitter", "cells", "seconds", "seed", "live", NULL};
 static const char *const presets[] = {"campfire", "torch", "jet", "object"};
 
 /* The simulation's box is 0.64 m on each side whatever the cell count
@@ -57,7 +60,9 @@ int scene_fire_simulate(const cJSON *item, const char *path, double sim_rate_hz,
                                             "\"seed\": K}");
     int which = -1;
     double cells = 16, seconds = 4, seed = 0;
+    bool live = false;
     if (json_check_keys(sim, at, sim_keys, err, err_size) ||
+        json_bool(sim, at, "live", &live, err, err_size) ||
         json_name(sim, at, "emitter", presets, 4, &which, err, err_size) ||
         json_number(sim, at, "cells", (number_range){.lo = FG_FLAME_SIM_MIN_CELLS,
                                                      .hi = SIM_MAX_CELLS, .integer = true},
@@ -85,11 +90,20 @@ int scene_fire_simulate(const cJSON *item, const char *path, double sim_rate_hz,
     for (int a = 0; seed != 0 && a < 2; a++)
         c.emitter[0].centre_m[a] += (fg_splitmix64_uniform(&state) - 0.5) * c.cell_m;
     size_t steps = (size_t)ceil(seconds * sim_rate_hz);
+    if (steps < 4)
+        return json_fail(err, err_size, at, "%zu steps; at least 4 are needed", steps);
     fg_flame_sim *fs;
     fg_result r = fg_flame_sim_create(&c, &fs);
     if (r != FG_OK)
         return json_fail(err, err_size, at, "the flame simulation refused it: %s",
                          fg_result_str(r));
+    f->flux_count = steps;
+    if (live) { /* checked; run as the fire sounds */
+        fg_flame_sim_destroy(fs);
+        f->live = true;
+        f->sim = c;
+        return 0;
+    }
     f->flux_m3_s = malloc(steps * sizeof *f->flux_m3_s);
     if (!f->flux_m3_s) {
         fg_flame_sim_destroy(fs);
@@ -105,7 +119,5 @@ int scene_fire_simulate(const cJSON *item, const char *path, double sim_rate_hz,
         f->flux_m3_s[k] = flux.flux_m3_s;
     }
     fg_flame_sim_destroy(fs);
-    f->flux_count = steps;
-    return steps < 4 ? json_fail(err, err_size, at, "%zu steps; at least 4 are needed", steps)
-                     : 0;
+    return 0;
 }
