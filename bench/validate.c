@@ -309,7 +309,8 @@ int main(int argc, char **argv)
     fg_propagation_config air = storm();
     static double near_psd[WINDOW / 2 + 1], far_psd[WINDOW / 2 + 1];
     fprintf(c.md, "# Validation against real thunder\n\n"
-                  "Written by `bench_validate` (bench/validate.c, run by `scripts/bench.sh`); %s. Every render "
+                  "Written by `bench_validate` (bench/validate.c, run by `scripts/bench.sh`); "
+                  "%s. Every render "
                   "goes through `fg_engine_render` to one ear 1.7 m up; those of the bolts "
                   "(sections 1, 2, 4 and 6) with refraction (R = 55 km), turbulence (2 ms), "
                   "ISO 9613-1 absorption (20 °C, 70 %%) and a ground image (0.9), sections 3 "
@@ -561,7 +562,9 @@ int main(int argc, char **argv)
     fprintf(c.md, "- judgement, lightning: at 25 km L_AF peaks at %.1f dB(A) and stays above "
                   "the %.0f dB(A) background for %.2f s (%.2f s at 3 km): %s\n",
             laf_max[2], BACKGROUND_DBA, span[2], span[0],
-            span[2] > 1.0 ? "still heard as a roll" : span[2] > 0.0 ? "a brief faint burst" : "inaudible");
+            span[2] > 1.0   ? "still heard as a roll"
+            : span[2] > 0.0 ? "a brief faint burst"
+                            : "inaudible");
     fputc('\n', c.md);
 
     fprintf(c.md, "## Reading the figures\n\n"
