@@ -31,7 +31,7 @@
 #define WINDOW 16384
 #define TABLE2_SEEDS 8
 /* The background a thunder roll must rise above to be heard, dB(A): the
- * daytime level of ANSI S12.9-1993/Part 3 (annex C, table C.1), category 6,
+ * daytime level of ANSI/ASA S12.9-2013/Part 3 (annex C, table C.1), category 6,
  * "very quiet suburban and rural residential" (34 dB(A) at night). */
 #define BACKGROUND_DBA 40.0
 /* IEC 61672-1 time weighting F (fast), s. */
@@ -409,9 +409,9 @@ int main(int argc, char **argv)
             "(sqrt(3^2 + 5^2) - 3) km / c = 8.3 s between the nearest and farthest point; "
             "recorded rolls last from 5 to 30-40 s, timed by ear from the first to the last "
             "audible sound. Heard: how long the A-weighted level with IEC 61672-1's F time "
-            "weighting (125 ms) stays above a %.0f dB(A) background (ANSI S12.9-1993/Part 3, "
-            "annex C: daytime, \"very quiet suburban and rural residential\"; 34 dB(A) at "
-            "night), first to last sample above it; this is the duration compared with the "
+            "weighting (125 ms) stays above a %.0f dB(A) background (ANSI/ASA "
+            "S12.9-2013/Part 3, annex C, table C.1: daytime, \"very quiet suburban and rural "
+            "residential\"; 34 dB(A) at night), first to last sample above it; this is the duration compared with the "
             "published rolls. Also given: the span holding the middle 90 %% of the energy, "
             "which leaves out the quiet start and end that a listener still hears.\n\n"
             "| preset | heard (L_AF > %.0f dB(A)) | max L_AF | 90 %% energy span |\n"
