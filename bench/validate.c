@@ -503,7 +503,11 @@ int main(int argc, char **argv)
             "stands h = (D - sqrt(2 R z_ear))²/2R = %.1f m high (81.8 m for an ear on the "
             "ground). Below it the sound is the creeping wave of the shadow, weaker by "
             "8.686 |a1'| sin 60° (k/2R²)^(1/3) = %.2f dB/km of shadow at 50 Hz (first Airy mode "
-            "over rigid ground; Pierce, Acoustics, 1981, ch. 9). Level of a segment with "
+            "over rigid ground, a1' = -1.01879 the first zero of Ai' (NIST DLMF table "
+            "9.9.1); Fock's creeping wave, for refracted sound Pierce, Acoustics, 1981, "
+            "ch. 9), applied at 50 Hz to every frequency: its growth as f^(1/3) is not "
+            "modelled, and no published dB/km figure was at hand to check 4.1 dB/km "
+            "against (docs/sound-model.md, \"The air\"). Level of a segment with "
             "refraction against straight rays, by height: 20 m (%.0f m into the shadow) → "
             "%.3f (model %.3f), 120 m → %.3f.\n\n![shadow](validation_shadow.png)\n\n",
             top, 1000.0 * beta, depth_20, ratio_20, want_20, ratio_120);
