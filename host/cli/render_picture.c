@@ -13,6 +13,11 @@
 /* Says why a picture at t shows no flash. */
 static void warn_unlit(const scene *s, double t)
 {
+    if (s->discharge_count == 0) {
+        fprintf(stderr, "fulgur render: warning: the scene has no discharge and no fire: nothing "
+                        "in the picture glows (its objects show in the dim room light)\n");
+        return;
+    }
     double first = INFINITY, emit = INFINITY;
     for (size_t i = 0; i < s->discharge_count; i++)
         if (picture_leader_start_s(&s->discharges[i]) < first) {
@@ -51,7 +56,7 @@ int render_picture(const scene *s, const char *path, const char *name, double ti
         snprintf(err, err_size, "--png: no GL context: %s", fgg_error_message());
     else if (fgg_picture_create(ctx, &pc, &pic) != FG_OK)
         snprintf(err, err_size, "--png: %s", fgg_error_message());
-    else if (picture_add_scene(pic, s, err, err_size) != 0)
+    else if (picture_add_scene(pic, s, t, err, err_size) != 0)
         ;
     else if (fgg_picture_draw(pic, &cam, t) != FG_OK || fgg_picture_write_png(pic, path) != FG_OK)
         snprintf(err, err_size, "--png: %s", fgg_error_message());

@@ -31,14 +31,15 @@ void picture_config(const scene *s, int width, int height, fgg_picture_config *o
  * naming the discharge. */
 int picture_add_surroundings(fgg_picture *pic, const scene *s, char *err, size_t err_size);
 
-/* Adds the surroundings and every discharge of the built scene as a flash
- * at its emit time with the engine's stroke offsets: the whole scene's
- * picture, as fulgur render --png draws it. Returns 0, or -1 with a
- * message naming the discharge. */
-int picture_add_scene(fgg_picture *pic, const scene *s, char *err, size_t err_size);
+/* Adds the surroundings, every discharge of the built scene as a flash
+ * at its emit time with the engine's stroke offsets, and the fires and
+ * aero objects where they are at t_s (picture_sources_add): the whole
+ * scene's picture at t_s, as fulgur render --png draws it. Returns 0, or
+ * -1 with a message naming the discharge, fire or object. */
+int picture_add_scene(fgg_picture *pic, const scene *s, double t_s, char *err, size_t err_size);
 
-/* The time of the scene's first return stroke (the earliest emit time):
- * a picture's default time. */
+/* The time of the scene's first return stroke (the earliest emit time),
+ * 0 for a scene without discharges: a picture's default time. */
 double picture_first_stroke_s(const scene *s);
 
 /* When a discharge's leader starts showing (its emit time, less the
@@ -54,6 +55,24 @@ size_t picture_framed_discharge(const scene *s, double t_s);
  * picture's clock, with the stroke offsets the engine will use. */
 void picture_flash(const fg_discharge *post, fg_preset preset, double start_s,
                    const double *strokes_s, uint32_t stroke_count, fgg_flash *out);
+
+/* A fire's flame in the picture (gpu/'s emissive volume): its base's
+ * radius and its height, the same for every fire; it flickers by itself. */
+#define PICTURE_FLAME_RADIUS_M 0.2
+#define PICTURE_FLAME_HEIGHT_M 0.6
+
+/* Adds the scene's fires (a flame each, where the fire is at t_s) and aero
+ * objects (a stick a steel rod along its span, its D across; a compact
+ * body a ball) at their poses at t_s; ids[fire_count + aero_count]
+ * receives their ids, the fires first. Returns 0, or -1 with a message
+ * naming the fire or object. */
+int picture_sources_add(fgg_picture *pic, const scene *s, double t_s, uint32_t *ids, char *err,
+                        size_t err_size);
+
+/* Moves what picture_sources_add added to the poses at t_s (a fixed fire
+ * stays). Returns 0, or -1 with a message naming the fire or object. */
+int picture_sources_move(fgg_picture *pic, const scene *s, double t_s, const uint32_t *ids,
+                         char *err, size_t err_size);
 
 /* The camera gpu/ takes for a scene camera. */
 void picture_camera(const scene_camera *sc, fgg_camera *out);

@@ -132,7 +132,7 @@ void picture_camera(const scene_camera *sc, fgg_camera *out)
     out->fov_y_deg = sc->fov_y_deg;
 }
 
-int picture_add_scene(fgg_picture *pic, const scene *s, char *err, size_t err_size)
+int picture_add_scene(fgg_picture *pic, const scene *s, double t_s, char *err, size_t err_size)
 {
     if (picture_add_surroundings(pic, s, err, err_size) != 0)
         return -1;
@@ -148,12 +148,19 @@ int picture_add_scene(fgg_picture *pic, const scene *s, char *err, size_t err_si
             return -1;
         }
     }
-    return 0;
+    uint32_t *ids = malloc((s->fire_count + s->aero_count + 1) * sizeof *ids);
+    if (!ids) {
+        snprintf(err, err_size, "the picture's fires and aero objects: out of memory");
+        return -1;
+    }
+    int rc = picture_sources_add(pic, s, t_s, ids, err, err_size);
+    free(ids);
+    return rc;
 }
 
 double picture_first_stroke_s(const scene *s)
 {
-    double t = INFINITY;
+    double t = s->discharge_count ? INFINITY : 0.0;
     for (size_t i = 0; i < s->discharge_count; i++)
         t = fmin(t, s->discharges[i].post.emit_time_s);
     return t;

@@ -270,13 +270,19 @@ typedef struct scene_apparatus {
 int scene_discharge_apparatus(const scene *s, size_t index, scene_apparatus *out, char *err,
                               size_t err_size);
 
+/* How much room a fire takes in the default framing, m each way. */
+#define SCENE_FRAME_FIRE_M 0.5
+
 /* The scene's camera, or when it gives none a default framing of
  * discharge index (built) and its apparatus, for a picture of aspect
  * width / height: lightning seen from the ground at the listener's
  * height, from the listener's side, the horizon low in the frame and the
  * channel's top near its top edge; anything else seen from the
  * listener's side and a little above (12 degrees), close enough that its
- * bounds fill the 45 degree vertical view or the horizontal one. */
+ * bounds fill the 45 degree vertical view or the horizontal one. A scene
+ * without discharges (index is then ignored) frames its fires and aero
+ * objects that way: each fire's points with SCENE_FRAME_FIRE_M around
+ * them, each object's reach around where it starts. */
 void scene_camera_framing(const scene *s, size_t index, double aspect, scene_camera *out);
 
 /* The engine configuration the scene asks for (rate, block, channels and

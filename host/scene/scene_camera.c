@@ -79,6 +79,28 @@ static void bounds(const scene *s, size_t index, double lo[3], double hi[3])
     }
 }
 
+/* The bounds of a scene without discharges: its fires' points, padded,
+ * and the reach of its aero objects about where each starts. */
+static void source_bounds(const scene *s, double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++)
+        lo[k] = INFINITY, hi[k] = -INFINITY;
+    for (size_t i = 0; i < s->fire_count; i++)
+        for (size_t n = 0; n < s->fires[i].path_count; n++)
+            for (int k = 0; k < 3; k++) {
+                double p = s->fires[i].path[n].position_m[k];
+                lo[k] = fmin(lo[k], p - SCENE_FRAME_FIRE_M), hi[k] = fmax(hi[k], p + SCENE_FRAME_FIRE_M);
+            }
+    for (size_t i = 0; i < s->aero_count; i++) {
+        const scene_aero *a = &s->aeros[i];
+        double reach = fmax(fabs(a->post.start_m), fabs(a->post.end_m));
+        for (int k = 0; k < 3; k++) {
+            double p = a->motion.position_m[k];
+            lo[k] = fmin(lo[k], p - reach), hi[k] = fmax(hi[k], p + reach);
+        }
+    }
+}
+
 /* The horizontal direction from the centre towards the listener (behind
  * the listener's forward when the listener is straight above or below). */
 static fg_vec3 listener_side(const scene *s, const double centre[3], double radius)
@@ -139,7 +161,10 @@ void scene_camera_framing(const scene *s, size_t index, double aspect, scene_cam
         return;
     }
     double lo[3], hi[3], centre[3], half[3];
-    bounds(s, index, lo, hi);
+    if (s->discharge_count)
+        bounds(s, index, lo, hi);
+    else
+        source_bounds(s, lo, hi);
     for (int k = 0; k < 3; k++) {
         centre[k] = isfinite(lo[k]) ? 0.5 * (lo[k] + hi[k]) : 0;
         half[k] = isfinite(lo[k]) ? fmax(0.5 * (hi[k] - lo[k]), 1e-3) : 0.5;
@@ -148,7 +173,7 @@ void scene_camera_framing(const scene *s, size_t index, double aspect, scene_cam
     out->up[2] = 1;
     out->fov_y_deg = DEFAULT_FOV_DEG;
     fg_vec3 side = listener_side(s, centre, fg_v3_len(fg_v3_load(half)));
-    fg_preset preset = s->discharges[index].preset;
+    fg_preset preset = s->discharge_count ? s->discharges[index].preset : FG_PRESET_COUNT;
     int sky = preset == FG_PRESET_LIGHTNING || preset == FG_PRESET_LIGHTNING_TABLE1;
     if (sky && isfinite(lo[0]))
         frame_sky(s, lo, hi, side, aspect, out);

@@ -56,7 +56,7 @@ static void shot_open(fixture *f, const char *name, double t, shot *out)
     fgg_picture_config pc;
     picture_config(&out->s, W, H, &pc);
     assert_int_equal(fgg_picture_create(f->ctx, &pc, &out->pic), FG_OK);
-    if (picture_add_scene(out->pic, &out->s, err, sizeof err) != 0)
+    if (picture_add_scene(out->pic, &out->s, out->t, err, sizeof err) != 0)
         fail_msg("%s: %s", name, err);
     scene_camera sc;
     scene_camera_framing(&out->s, picture_framed_discharge(&out->s, t), (double)W / H, &sc);
