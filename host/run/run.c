@@ -38,17 +38,14 @@ static int open_live(run_ctx *run, int *rc, char *err, size_t err_size)
  * the threads start: the sim thread posts only discharges after this. */
 static int post_aero_objects(run_ctx *run, int *rc, char *err, size_t err_size)
 {
-    for (size_t i = 0; i < run->s->aero_count; i++) {
-        fg_result r = fg_aero_object_post(run->engine, &run->s->aeros[i].post, &run->aero_ids[i]);
-        if (r != FG_OK) {
-            snprintf(err, err_size, "aero_objects[%zu]: the engine refused it: %s%s", i,
-                     fg_result_str(r),
-                     r == FG_ERR_POOL_FULL || r == FG_ERR_QUEUE_FULL ? " (try --voices)" : "");
-            *rc = r == FG_ERR_POOL_FULL || r == FG_ERR_QUEUE_FULL ? CLI_RUNTIME : CLI_USAGE;
-            return -1;
-        }
-    }
-    return 0;
+    fg_result r = scene_aero_post_all(run->s, run->engine, run->aero_ids, err, err_size);
+    if (r == FG_OK)
+        return 0;
+    bool room = r == FG_ERR_POOL_FULL || r == FG_ERR_QUEUE_FULL;
+    if (room)
+        snprintf(err + strlen(err), err_size - strlen(err), " (try --voices)");
+    *rc = room ? CLI_RUNTIME : CLI_USAGE;
+    return -1;
 }
 
 /* Posts every fire (each sounds from its own emit time) with its ring
@@ -59,8 +56,7 @@ static int post_fires(run_ctx *run, int *rc, char *err, size_t err_size)
 {
     fg_result r = scene_fire_job_init(&run->fires, run->s, run->rate_hz, err, err_size);
     if (r == FG_OK)
-        r = scene_fire_job_feed(&run->fires, run->engine, INFINITY, 0.0, 1.0 / run->opt.frame_hz,
-                                err, err_size);
+        r = scene_fire_job_post_all(&run->fires, run->engine, err, err_size);
     if (r == FG_OK)
         return 0;
     bool room = r == FG_ERR_POOL_FULL || r == FG_ERR_QUEUE_FULL;

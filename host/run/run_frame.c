@@ -74,19 +74,11 @@ static bool set_aero_poses(run_ctx *run, double t)
     for (size_t i = 0; i < run->s->aero_count; i++) {
         if (run->aero_done[i])
             continue;
-        fg_aero_pose pose;
-        scene_aero_pose_at(&run->s->aeros[i], t, &pose);
-        fg_result r = fg_aero_object_set_pose(run->engine, run->aero_ids[i], &pose);
-        if (r == FG_OK) {
-            run->aero_poses_set++;
-        } else if (r == FG_ERR_NOT_FOUND) {
-            run->aero_done[i] = true; /* finished and collected */
-        } else {
-            snprintf(run->frame_error, sizeof run->frame_error,
-                     "aero_objects[%zu]: its pose at %.6f s: %s (faster than %g m/s?)", i, t,
-                     fg_result_str(r), FG_AERO_MAX_SPEED_M_S);
+        if (scene_aero_publish_pose(run->s, i, run->engine, run->aero_ids[i], t,
+                                    &run->aero_done[i], run->frame_error,
+                                    sizeof run->frame_error) != FG_OK)
             return false;
-        }
+        run->aero_poses_set += !run->aero_done[i];
     }
     return true;
 }

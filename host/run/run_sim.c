@@ -13,7 +13,6 @@
  * moving ones' poses up to a tick past the coming block and pushes every
  * stream as far as its ring takes; the sim thread is done once every
  * discharge is posted or dropped and every fire's voice is over. */
-#include <math.h>
 #include <stdio.h>
 
 #include "run_gate.h"
@@ -70,15 +69,10 @@ static int feed_fires(run_ctx *run, uint64_t now)
 {
     double period = 1.0 / run->opt.frame_hz;
     double until = (double)(now + run->block_frames) / run->rate_hz + RUN_POSE_LEAD_TICKS * period;
-    fg_result r = FG_OK;
-    for (double t; r == FG_OK && (t = (double)run->fire_pose_tick * period) <= until;
-         run->fire_pose_tick++)
-        r = scene_fire_job_poses(&run->fires, run->engine, t, run->sim_error,
-                                 sizeof run->sim_error);
-    if (r == FG_OK)
-        r = scene_fire_job_feed(&run->fires, run->engine, INFINITY, 0.0, period, run->sim_error,
-                                sizeof run->sim_error);
-    return r == FG_OK ? 0 : -1;
+    return scene_fire_job_follow(&run->fires, run->engine, until, period, &run->fire_pose_tick,
+                                 run->sim_error, sizeof run->sim_error) == FG_OK
+               ? 0
+               : -1;
 }
 
 void *run_sim_thread(void *arg)

@@ -238,6 +238,21 @@ void scene_listener_at(const scene *s, double t_s, fg_listener *out);
 /* Aero object a's pose at t (time_s = t). */
 void scene_aero_pose_at(const scene_aero *a, double t_s, fg_aero_pose *out);
 
+/* Posts every aero object now (each sounds from its own emit time), the
+ * voices' ids in ids[aero_count]: what a live host does before its
+ * threads start. Returns FG_OK, or the engine's refusal with a message
+ * naming the object (nothing posted after it). [main-thread] */
+fg_result scene_aero_post_all(const scene *s, fg_engine *e, fg_voice_id *ids, char *err,
+                              size_t err_size);
+
+/* Publishes aero object i's pose at t_s to its voice id in e; when the
+ * voice has since been collected, sets *done instead. Returns FG_OK, or
+ * the engine's refusal with a message naming the object (a motion faster
+ * than FG_AERO_MAX_SPEED_M_S). [any-thread] but not the audio thread, one
+ * publisher per object */
+fg_result scene_aero_publish_pose(const scene *s, size_t i, fg_engine *e, fg_voice_id id,
+                                  double t_s, bool *done, char *err, size_t err_size);
+
 /* Fire f's pose at t (time_s = t): linear along its path, velocity the
  * chord's, held before the first point and after the last. */
 void scene_fire_pose_at(const scene_fire *f, double t_s, fg_fire_pose *out);

@@ -66,6 +66,36 @@ void scene_aero_pose_at(const scene_aero *a, double t_s, fg_aero_pose *out)
     fg_v3_store(rotate(normal, k, angle), out->normal);
 }
 
+fg_result scene_aero_post_all(const scene *s, fg_engine *e, fg_voice_id *ids, char *err,
+                              size_t err_size)
+{
+    for (size_t i = 0; i < s->aero_count; i++) {
+        fg_result r = fg_aero_object_post(e, &s->aeros[i].post, &ids[i]);
+        if (r != FG_OK) {
+            snprintf(err, err_size, "aero_objects[%zu]: the engine refused it: %s", i,
+                     fg_result_str(r));
+            return r;
+        }
+    }
+    return FG_OK;
+}
+
+fg_result scene_aero_publish_pose(const scene *s, size_t i, fg_engine *e, fg_voice_id id,
+                                  double t_s, bool *done, char *err, size_t err_size)
+{
+    fg_aero_pose pose;
+    scene_aero_pose_at(&s->aeros[i], t_s, &pose);
+    fg_result r = fg_aero_object_set_pose(e, id, &pose);
+    if (r == FG_ERR_NOT_FOUND) {
+        *done = true; /* finished and collected */
+        return FG_OK;
+    }
+    if (r != FG_OK)
+        snprintf(err, err_size, "aero_objects[%zu]: its pose at %.6f s: %s (faster than %g m/s?)",
+                 i, t_s, fg_result_str(r), FG_AERO_MAX_SPEED_M_S);
+    return r;
+}
+
 static int unit_or_fail(const cJSON *obj, const char *path, const char *key, double v[3],
                         char *err, size_t err_size)
 {

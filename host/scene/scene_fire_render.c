@@ -198,3 +198,18 @@ fg_result scene_fire_job_feed(scene_fire_job *job, fg_engine *e, double horizon_
     }
     return FG_OK;
 }
+
+fg_result scene_fire_job_post_all(scene_fire_job *job, fg_engine *e, char *err, size_t err_size)
+{
+    return scene_fire_job_feed(job, e, INFINITY, 0.0, 1.0, err, err_size);
+}
+
+fg_result scene_fire_job_follow(scene_fire_job *job, fg_engine *e, double until_s,
+                                double pose_period_s, uint64_t *tick, char *err, size_t err_size)
+{
+    fg_result r = FG_OK;
+    for (double t; r == FG_OK && (t = (double)*tick * pose_period_s) <= until_s; ++*tick)
+        r = scene_fire_job_poses(job, e, t, err, err_size);
+    return r == FG_OK ? scene_fire_job_feed(job, e, INFINITY, 0.0, pose_period_s, err, err_size)
+                      : r;
+}

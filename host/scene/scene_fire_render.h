@@ -47,6 +47,20 @@ fg_result scene_fire_job_feed(scene_fire_job *job, fg_engine *engine, double hor
                               double poses_until_s, double pose_period_s, char *err,
                               size_t err_size);
 
+/* A live host's fires: every fire posted now (each sounding from its own
+ * start), its ring filled as far as it takes, before the host's threads
+ * start. Returns as scene_fire_job_feed. [main-thread] */
+fg_result scene_fire_job_post_all(scene_fire_job *job, fg_engine *engine, char *err,
+                                  size_t err_size);
+
+/* Then, on the host's sim thread: publishes the moving fires' poses at
+ * the ticks k * pose_period_s from *tick up to until_s (*tick moves on),
+ * and pushes every stream as far as its ring takes. Returns as
+ * scene_fire_job_feed. */
+fg_result scene_fire_job_follow(scene_fire_job *job, fg_engine *engine, double until_s,
+                                double pose_period_s, uint64_t *tick, char *err,
+                                size_t err_size);
+
 /* Whether every fire's voice has finished and been collected (as the
  * feed and the poses find out): nothing more to feed or move. */
 bool scene_fire_job_over(const scene_fire_job *job);

@@ -73,17 +73,8 @@ static fg_result publish_aero_pose(render_job *job, size_t i, double t, char *er
 {
     if (!job->aero_ids[i] || job->aero_done[i])
         return FG_OK;
-    fg_aero_pose pose;
-    scene_aero_pose_at(&job->s->aeros[i], t, &pose);
-    fg_result r = fg_aero_object_set_pose(job->engine, job->aero_ids[i], &pose);
-    if (r == FG_ERR_NOT_FOUND) {
-        job->aero_done[i] = true; /* finished and collected */
-    } else if (r != FG_OK) {
-        snprintf(err, err_size, "aero_objects[%zu]: its pose at %.6f s: %s (faster than "
-                                "%g m/s?)", i, t, fg_result_str(r), FG_AERO_MAX_SPEED_M_S);
-        return r;
-    }
-    return FG_OK;
+    return scene_aero_publish_pose(job->s, i, job->engine, job->aero_ids[i], t,
+                                   &job->aero_done[i], err, err_size);
 }
 
 /* Posts every discharge whose emit time falls before horizon_s. */
