@@ -47,8 +47,23 @@ static void publish_listener(view *v, double t_s)
     (void)r;
 }
 
-/* One frame: the listener, events, the scene's timeline, answers, the
- * picture at now_s. Returns -1 on a GL error. */
+/* Publishes each live aero object's pose at t_s and moves the picture's
+ * fires and objects to now_s. Returns -1 with the message in
+ * v->frame_error, or with a GL error. */
+static int move_sources(view *v, fgg_picture *pic, double t_s)
+{
+    for (size_t i = 0; i < v->s->aero_count; i++)
+        if (!v->aero_done[i] &&
+            scene_aero_publish_pose(v->s, i, v->engine, v->aero_ids[i], t_s, &v->aero_done[i],
+                                    v->frame_error, sizeof v->frame_error) != FG_OK)
+            return -1;
+    return picture_sources_move(pic, v->s, v->now_s, v->source_ids, v->frame_error,
+                                sizeof v->frame_error);
+}
+
+/* One frame: the listener and the objects, events, the scene's timeline,
+ * answers, the picture at now_s. Returns -1 on a GL error or a refused
+ * pose (v->frame_error). */
 static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
                  const view_event *events, size_t count, size_t *next)
 {
@@ -58,6 +73,8 @@ static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
     /* the head one frame ahead, at the end of the sound this frame lets
      * play, as a VR runtime predicts it for the frame's display */
     publish_listener(v, v->now_s + 1.0 / v->opt.fps);
+    if (move_sources(v, pic, v->now_s + 1.0 / v->opt.fps) != 0)
+        return -1;
     if (!headless && !view_window_poll(v, ctx))
         v->quit = true;
     for (; *next < count && events[*next].frame <= k; ++*next)
@@ -85,8 +102,13 @@ static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
         if (fgg_picture_write_png(pic, path) != FG_OK)
             return -1;
     }
-    if (headless)
-        view_release_audio(v, (uint64_t)llround((k + 1) / v->opt.fps * v->rate_hz));
+    if (headless) {
+        uint64_t target = (uint64_t)llround((k + 1) / v->opt.fps * v->rate_hz);
+        atomic_store(&v->fire_target, target);
+        while (v->s->fire_count && atomic_load(&v->fire_done) < target && !atomic_load(&v->stop))
+            monotonic_sleep_until_ns(monotonic_now_ns() + 200000);
+        view_release_audio(v, target);
+    }
     return 0;
 }
 
@@ -103,8 +125,8 @@ static int loop(view *v, fgg_context *ctx, fgg_picture *pic, char *err, size_t e
         if (atomic_load(&v->stop))
             break; /* the audio thread ended: its error is reported below */
         if (frame(v, ctx, pic, k, events, count, &next) != 0) {
-            snprintf(err, err_size, "%s", fgg_error_message());
-            rc = CLI_RUNTIME;
+            snprintf(err, err_size, "%s", v->frame_error[0] ? v->frame_error : fgg_error_message());
+            rc = v->frame_error[0] ? CLI_USAGE : CLI_RUNTIME; /* the scene's motion */
             break;
         }
         v->frames_drawn = k + 1;
@@ -129,6 +151,27 @@ static void report(view *v, uint32_t frames)
             (unsigned)frames, (unsigned long long)v->requests, (unsigned long long)st.posted,
             (unsigned long long)st.adopted, (unsigned long long)st.late_events,
             (unsigned long long)atomic_load(&v->audio_done));
+}
+
+/* Posts the scene's aero objects and fires (their sound at the view's
+ * rate) before the threads start. Returns 0, or -1 with a message and *rc. */
+static int post_sources(view *v, int *rc, char *err, size_t err_size)
+{
+    const scene *s = v->s;
+    v->aero_ids = calloc(s->aero_count + 1, sizeof *v->aero_ids);
+    v->aero_done = calloc(s->aero_count + 1, sizeof *v->aero_done);
+    if (!v->aero_ids || !v->aero_done) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    fg_result r = scene_aero_post_all(s, v->engine, v->aero_ids, err, err_size);
+    if (r == FG_OK && (r = scene_fire_job_init(&v->fires, s, v->rate_hz, err, err_size)) == FG_OK)
+        r = scene_fire_job_post_all(&v->fires, v->engine, err, err_size);
+    if (r == FG_OK)
+        return 0;
+    *rc = r == FG_ERR_NO_MEMORY || r == FG_ERR_POOL_FULL || r == FG_ERR_QUEUE_FULL ? CLI_RUNTIME
+                                                                                   : CLI_USAGE;
+    return -1;
 }
 
 /* GL, engine, driver and threads up; the loop; everything down in reverse. */
@@ -162,7 +205,13 @@ static int view_scene(view *v)
         goto done;
     }
     v->pic = pic;
-    if (picture_add_surroundings(pic, v->s, err, sizeof err) != 0)
+    if (!(v->source_ids = calloc(v->s->fire_count + v->s->aero_count + 1,
+                                 sizeof *v->source_ids))) {
+        snprintf(err, sizeof err, "out of memory");
+        goto done;
+    }
+    if (picture_add_surroundings(pic, v->s, err, sizeof err) != 0 ||
+        picture_sources_add(pic, v->s, 0.0, v->source_ids, err, sizeof err) != 0)
         goto done;
     char why[256];
     v->overlay = view_overlay_create(v->opt.size.height, why, sizeof why);
@@ -187,6 +236,9 @@ static int view_scene(view *v)
         snprintf(err, sizeof err, "the engine refused the scene's listener");
         goto done;
     }
+    if (post_sources(v, &rc, err, sizeof err) != 0)
+        goto done;
+    rc = CLI_RUNTIME;
     for (uint32_t ch = 0; ch < v->s->channels; ch++)
         if (!(v->planes[ch] = calloc(v->block_frames, sizeof(float)))) {
             snprintf(err, sizeof err, "out of memory");
@@ -217,7 +269,10 @@ static int view_scene(view *v)
     take_replies(v, pic); /* answers the loop did not take: free them */
     for (view_request *q; (q = view_ring_pop(&v->to_sim));)
         free(q);
-    if (rc == CLI_OK && v->render_result != FG_OK) {
+    if (rc == CLI_OK && v->sim_error[0]) {
+        snprintf(err, sizeof err, "%s", v->sim_error);
+        rc = CLI_RUNTIME;
+    } else if (rc == CLI_OK && v->render_result != FG_OK) {
         snprintf(err, sizeof err, "render: %s", fg_result_str(v->render_result));
         rc = CLI_RUNTIME;
     } else if (rc == CLI_OK && v->audio_error[0]) {
@@ -235,6 +290,10 @@ static int view_scene(view *v)
 done:
     live_audio_close(v->live);
     fg_engine_destroy(v->engine);
+    scene_fire_job_deinit(&v->fires);
+    free(v->aero_ids);
+    free(v->aero_done);
+    free(v->source_ids);
     free(v->planes[0]);
     free(v->planes[1]);
     view_overlay_destroy(v->overlay);
@@ -246,7 +305,8 @@ done:
     return rc;
 }
 
-/* The scene, which must have a discharge: the one space triggers. */
+/* The scene, which must have something to show: a discharge (the first
+ * is the one space triggers), a fire or an aero object. */
 static int load_scene(const char *path, scene *s)
 {
     char err[512];
@@ -260,8 +320,9 @@ static int load_scene(const char *path, scene *s)
         scene_deinit(s);
         return -1;
     }
-    if (s->discharge_count == 0) {
-        fprintf(stderr, "fulgur view: %s: needs a discharge (the one space triggers)\n", path);
+    if (s->discharge_count + s->fire_count + s->aero_count == 0) {
+        fprintf(stderr, "fulgur view: %s: needs a discharge, a fire or an aero object to show\n",
+                path);
         scene_deinit(s);
         return -1;
     }

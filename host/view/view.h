@@ -14,7 +14,8 @@
  *   view_request.c [gpu-thread] the requests to the sim thread and their
  *                 rings
  *   view_sim.c    [sim-thread] grows trees (generators, charges), posts
- *                 them, answers with the tree and its stroke offsets
+ *                 them, answers with the tree and its stroke offsets; feeds
+ *                 the scene's fires and moves them
  *   view_audio.c  [audio-thread] pulls fg_engine_render into an audio driver,
  *                 keeping the last callbacks' durations for the overlay
  *   view_gate.c   the headless lock-step between frames and audio; stopping
@@ -43,6 +44,7 @@
 #include "common/options.h"
 #include "fulgur/gpu.h"
 #include "scene/scene.h"
+#include "scene/scene_fire_render.h"
 #include "fg_ring.h"
 
 #define VIEW_MAX_CHARGES 64
@@ -157,6 +159,20 @@ typedef struct view {
     uint64_t posted;         /* replies without an error */
     double now_s;            /* the picture clock of the frame being made */
     uint32_t frames_drawn;
+
+    /* the scene's aero objects and fires, posted before the threads start
+     * (each sounds from its own time, once: R replays the discharges only) */
+    fg_voice_id *aero_ids;
+    bool *aero_done;         /* the frame thread's: collected, no more poses */
+    uint32_t *source_ids;    /* the frame thread's: their picture (fires first) */
+    char frame_error[512];   /* an object's pose refused: the run ends */
+    scene_fire_job fires;    /* the sim thread's once it starts */
+    uint64_t fire_pose_tick; /* the sim thread's: the next frame tick of fire poses */
+    char sim_error[512];     /* a fire's sound failed: the run ends */
+    /* headless: the audio frame the fires must be followed to (their poses
+     * published, their rings filled) before the audio may render up to it,
+     * set by the frame thread; and how far the sim thread has followed them */
+    _Atomic uint64_t fire_target, fire_done;
 
     fg_ring to_sim, from_sim;
     pthread_mutex_t lock;    /* the gates below; never held by the audio path's render */

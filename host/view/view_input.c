@@ -163,11 +163,15 @@ static void clear_charges(view *v)
 void view_apply(view *v, const view_event *e)
 {
     double soon = v->now_s + VIEW_LEAD_S;
+    bool triggers = v->s->discharge_count > 0; /* space and H play its first discharge */
     switch (e->kind) {
     case VIEW_EV_DISCHARGE:
-        view_request_discharge(v, VIEW_REQ_ONE, 0, soon);
+        if (triggers)
+            view_request_discharge(v, VIEW_REQ_ONE, 0, soon);
         break;
     case VIEW_EV_HOLD:
+        if (!triggers)
+            break;
         v->holding = !v->holding;
         view_request_discharge(v, v->holding ? VIEW_REQ_HOLD : VIEW_REQ_STOP, 0, soon);
         break;

@@ -145,6 +145,17 @@ void *view_sim_thread(void *arg)
     fg_voice_id held = 0;
     while (!atomic_load(&v->stop)) {
         fg_engine_collect(v->engine);
+        /* the fires' poses at the frame ticks up to a lead past the engine
+         * clock (headless: past the frame thread's target), their sound */
+        uint64_t target = atomic_load(&v->fire_target);
+        double until = fmax(fg_engine_time_s(v->engine), (double)target / v->rate_hz);
+        if (scene_fire_job_follow(&v->fires, v->engine, until + VIEW_LEAD_S, 1.0 / v->opt.fps,
+                                  &v->fire_pose_tick, v->sim_error,
+                                  sizeof v->sim_error) != FG_OK) {
+            view_stop(v);
+            break;
+        }
+        atomic_store(&v->fire_done, target);
         view_request *q = view_ring_pop(&v->to_sim);
         if (!q) {
             monotonic_sleep_until_ns(monotonic_now_ns() + 500000);

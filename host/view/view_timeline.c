@@ -41,11 +41,11 @@ int view_timeline_init(view *v)
 {
     size_t n = v->s->discharge_count;
     v->order = scene_post_order(v->s);
-    v->framing = malloc(n * sizeof *v->framing);
+    v->framing = malloc((n ? n : 1) * sizeof *v->framing);
     if (!v->order || !v->framing)
         return -1;
     double aspect = (double)v->opt.size.width / v->opt.size.height;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < (n ? n : 1); i++) { /* none: the fires and objects' framing */
         scene_camera sc;
         scene_camera_framing(v->s, i, aspect, &sc);
         view_camera_set(&v->framing[i], &sc);
@@ -53,7 +53,7 @@ int view_timeline_init(view *v)
     v->next = v->next_framed = 0;
     v->timeline_start_s = 0;
     v->follow = true;
-    v->framed = v->order[0];
+    v->framed = n ? v->order[0] : 0;
     v->cam = v->goal = v->framing[v->framed];
     return 0;
 }
