@@ -67,18 +67,38 @@ static uint64_t abe_path_units(const fg_event_ear *ear, const fg_event_play *pla
     return (terms + ABE_TERMS_PER_UNIT - 1) / ABE_TERMS_PER_UNIT;
 }
 
+/* The wave of ear as play places it, and its first and last sample:
+ * false when it is out of range. */
+static bool abe_located(const fg_event_ear *ear, const fg_event_play *play, fg_abe_wave *w,
+                        int64_t *a, int64_t *b, long *first, long *last)
+{
+    *w = abe_placed(ear, play);
+    if (!fg_abe_wave_in_range(w, play->fs_hz))
+        return false;
+    fg_abe_wave_span(w, play->fs_hz, a, b);
+    *first = (long)*a;
+    *last = (long)*b;
+    return true;
+}
+
+static bool abe_ended(const fg_event *ev, const fg_event_ear *ear, const fg_event_play *play,
+                      long *first, long *last)
+{
+    (void)ev;
+    fg_abe_wave w;
+    int64_t a, b;
+    return abe_located(ear, play, &w, &a, &b, first, last) && b < 0;
+}
+
 static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
                               const fg_event_play *play, long *first, long *last)
 {
     (void)ev;
     const double fs = play->fs_hz;
-    fg_abe_wave w = abe_placed(ear, play);
-    if (!fg_abe_wave_in_range(&w, fs))
-        return FG_WAVE_NON_FINITE;
+    fg_abe_wave w;
     int64_t a, b;
-    fg_abe_wave_span(&w, fs, &a, &b);
-    *first = (long)a;
-    *last = (long)b;
+    if (!abe_located(ear, play, &w, &a, &b, first, last))
+        return FG_WAVE_NON_FINITE;
     if (b < 0)
         return FG_WAVE_DONE;
     if (a >= (int64_t)play->frames)
@@ -97,7 +117,7 @@ static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
 
 static bool abe_render(void *voice, bool stopping, const fg_block_context *block)
 {
-    return fg_discharge_render_with(voice, stopping, block, abe_add);
+    return fg_discharge_render_with(voice, stopping, block, abe_add, abe_ended);
 }
 
 static const fg_discharge_model abe_model = {

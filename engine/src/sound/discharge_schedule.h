@@ -6,7 +6,10 @@
  * moving listener shifts any start by at most (displacement + ear spacing)
  * / c, so an event joins an instance's window once its post-time start,
  * less that look-ahead, falls before the block's end. Events leave the
- * window in order once their waveform has ended for every ear.
+ * window in order once their waveform has ended for every ear; one that
+ * has ended behind a longer one still sounding stays in the window, where
+ * each ear costs the model's test of its span (fg_discharge_ended_fn),
+ * not an add, and the unit of the work bound it always cost.
  *
  * One implementation for both models, written once here and instantiated
  * by each model's render with its own add function (wm_model.c,
@@ -22,6 +25,20 @@
 typedef fg_wave_status (*fg_discharge_add_fn)(const fg_event *ev, const fg_event_ear *ear,
                                               const fg_event_play *play, long *first,
                                               long *last);
+
+/* Whether an ear's wave of ev, as play's instance places it, has ended
+ * before the block: true exactly when the model's add would return
+ * FG_WAVE_DONE having added nothing on any bus or channel, its first and
+ * last sample written as the add writes them; false (first and last
+ * unspecified) for a wave the add must see, one out of range among them.
+ * The test is the add's own, so a finished ear costs the few terms of its
+ * span, not the layout's gains and an add per channel and bus. Exact
+ * because every weight the add scales a wave by (a layout gain, the head
+ * shadow's alpha - 1, a band's share) lies in [-1, 1]: a wave in range
+ * stays in range on every bus. The model's path_units of a wave that has
+ * ended is 0, so its price is the one unit (fg_discharge_add_event). */
+typedef bool (*fg_discharge_ended_fn)(const fg_event *ev, const fg_event_ear *ear,
+                                      const fg_event_play *play, long *first, long *last);
 
 /* One block of one voice, as its instances see it. */
 typedef struct fg_discharge_block {
@@ -92,13 +109,27 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg
     return st;
 }
 
+/* The price of an ear that has ended (fg_discharge_ended_fn): its one
+ * unit, spent from the block's work as fg_discharge_add_event would, or
+ * FG_WAVE_SKIPPED when it does not fit. */
+static inline fg_wave_status fg_discharge_price_ended(const fg_block_context *ctx,
+                                                      uint64_t *units)
+{
+    *units = 1;
+    if (*ctx->work_left < 1)
+        return FG_WAVE_SKIPPED;
+    *ctx->work_left -= 1;
+    return FG_WAVE_DONE;
+}
+
 /* Renders one instance; returns true once all its events are done. Stops
  * at the first ear whose price does not fit the block's work (it and the
  * unit of each ear after it are counted skipped) or a wave that is not
  * finite (v->non_finite). */
 static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instance *in,
                                                 const fg_discharge_block *vb,
-                                                fg_discharge_add_fn add)
+                                                fg_discharge_add_fn add,
+                                                fg_discharge_ended_fn ended)
 {
     const fg_block_context *ctx = vb->ctx;
     const uint32_t n = in->main_only ? v->main_count : v->event_count;
@@ -142,7 +173,10 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
             }
             uint64_t units;
             fg_wave_status st =
-                fg_discharge_add_event(ev, ear, &play, ch, ctx, v->model, add, &a, &b, &units);
+                ended(ev, ear, &play, &a, &b)
+                    ? fg_discharge_price_ended(ctx, &units)
+                    : fg_discharge_add_event(ev, ear, &play, ch, ctx, v->model, add, &a, &b,
+                                             &units);
             if (st == FG_WAVE_NON_FINITE) {
                 v->non_finite = true;
                 return false;
@@ -180,13 +214,14 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
  * whose wave turned non-finite is retired at once: what it added before
  * was finite, and it adds nothing more. */
 static inline bool fg_discharge_render_with(void *voice, bool stopping,
-                                            const fg_block_context *ctx, fg_discharge_add_fn add)
+                                            const fg_block_context *ctx, fg_discharge_add_fn add,
+                                            fg_discharge_ended_fn ended)
 {
     fg_discharge_voice *v = voice;
     fg_discharge_block vb;
     fg_discharge_begin_block(v, stopping, ctx, &vb);
     for (uint32_t i = 0; i < v->inst_count && !v->non_finite;) {
-        if (fg_discharge_render_instance(v, &v->inst[i], &vb, add))
+        if (fg_discharge_render_instance(v, &v->inst[i], &vb, add, ended))
             v->inst[i] = v->inst[--v->inst_count];
         else
             i++;

@@ -216,7 +216,7 @@ fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
     long first, last;
     fg_wm_event_span(e, &first, &last);
     long n = (long)b->n;
-    if (last < -3)
+    if (fg_wm_event_ended(last))
         return FG_WAVE_DONE;
     if (first >= n)
         return FG_WAVE_PENDING;

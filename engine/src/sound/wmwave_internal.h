@@ -45,6 +45,15 @@ bool fg_wm_event_in_range(const fg_wm_event *e);
 /* First and last sample the event touches (e in range). */
 void fg_wm_event_span(const fg_wm_event *e, long *first, long *last);
 
+/* Whether an event whose last sample is last ends before the block it
+ * would be added to, even the accumulator's state before it: then
+ * fg_wm_accum_add of it (in range) adds nothing and returns
+ * FG_WAVE_DONE. */
+static inline bool fg_wm_event_ended(long last)
+{
+    return last < -3;
+}
+
 /* Adds event e (positions relative to the block start) to the block's
  * accumulator. The cost is a few closed-form evaluations per breakpoint in
  * the block plus three for the state, whatever the waveform's length.
