@@ -67,40 +67,28 @@ static uint64_t abe_path_units(const fg_event_ear *ear, const fg_event_play *pla
     return (terms + ABE_TERMS_PER_UNIT - 1) / ABE_TERMS_PER_UNIT;
 }
 
-/* The wave of ear as play places it, and its first and last sample:
- * false when it is out of range. */
-static bool abe_located(const fg_event_ear *ear, const fg_event_play *play, fg_abe_wave *w,
-                        int64_t *a, int64_t *b, long *first, long *last)
-{
-    *w = abe_placed(ear, play);
-    if (!fg_abe_wave_in_range(w, play->fs_hz))
-        return false;
-    fg_abe_wave_span(w, play->fs_hz, a, b);
-    *first = (long)*a;
-    *last = (long)*b;
-    return true;
-}
-
-static bool abe_ended(const fg_event *ev, const fg_event_ear *ear, const fg_event_play *play,
-                      long *first, long *last)
+static fg_wave_status abe_place(const fg_event *ev, const fg_event_ear *ear,
+                                const fg_event_play *play, fg_wave_place *at)
 {
     (void)ev;
-    fg_abe_wave w;
-    int64_t a, b;
-    return abe_located(ear, play, &w, &a, &b, first, last) && b < 0;
-}
-
-static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
-                              const fg_event_play *play, long *first, long *last)
-{
-    (void)ev;
-    const double fs = play->fs_hz;
-    fg_abe_wave w;
-    int64_t a, b;
-    if (!abe_located(ear, play, &w, &a, &b, first, last))
+    at->abe = abe_placed(ear, play);
+    if (!fg_abe_wave_in_range(&at->abe, play->fs_hz))
         return FG_WAVE_NON_FINITE;
-    if (b < 0)
-        return FG_WAVE_DONE;
+    int64_t a, b;
+    fg_abe_wave_span(&at->abe, play->fs_hz, &a, &b);
+    at->first = (long)a;
+    at->last = (long)b;
+    return b < 0 ? FG_WAVE_DONE : FG_WAVE_SOUNDING;
+}
+
+static fg_wave_status abe_add(const fg_event_ear *ear, const fg_event_play *play,
+                              const fg_wave_place *at)
+{
+    (void)ear;
+    const double fs = play->fs_hz;
+    fg_abe_wave w = at->abe;
+    int64_t a, b;
+    fg_abe_wave_span(&w, fs, &a, &b);
     if (a >= (int64_t)play->frames)
         return FG_WAVE_PENDING;
     double peak = w.peak_pa;
@@ -117,7 +105,7 @@ static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
 
 static bool abe_render(void *voice, bool stopping, const fg_block_context *block)
 {
-    return fg_discharge_render_with(voice, stopping, block, abe_add, abe_ended);
+    return fg_discharge_render_with(voice, stopping, block, abe_place, abe_add);
 }
 
 static const fg_discharge_model abe_model = {

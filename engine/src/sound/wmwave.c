@@ -90,28 +90,26 @@ void fg_wm_event_span(const fg_wm_event *e, long *first, long *last)
     *last = sample_at(e->center + half);
 }
 
-/* Which quadratic piece of p holds tau: 0 before the wave, 1 the rising
- * shell, 2 the middle, 3 the falling shell, 4 after. */
-static int piece(const fg_wm_shape *w, double tau)
+/* Which quadratic piece of p holds tau, for the breakpoints inner =
+ * |psi - s| and outer = psi + s: 0 before the wave, 1 the rising shell, 2
+ * the middle, 3 the falling shell, 4 after. */
+static int piece(double inner, double outer, double tau)
 {
-    double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
     return tau <= -outer ? 0 : tau <= -inner ? 1 : tau <= inner ? 2 : tau <= outer ? 3 : 4;
 }
 
-/* The average over sample k, accurate to rounding of the peak. A difference
- * of P at the two edges loses digits when the wave spans many samples (P is
- * ~ psi times the peak, the difference ~ 1/width of it), and the block
- * accumulator extrapolates those errors quadratically across the block. So
- * inside one piece the average of the quadratic is taken directly:
- * p(mid) + p'' h^2 / 24, h = 1/width; across a breakpoint, the P difference
- * (that sample's error is not extrapolated: the samples after it are). */
-static double sample_average(const fg_wm_event *e, long k)
+/* The average over the sample from tau = a (in piece pa) to z (in pz),
+ * accurate to rounding of the peak. A difference of P at the two edges
+ * loses digits when the wave spans many samples (P is ~ psi times the
+ * peak, the difference ~ 1/width of it), and the block accumulator
+ * extrapolates those errors quadratically across the block. So inside one
+ * piece the average of the quadratic is taken directly: p(mid) + p'' h^2
+ * / 24, h = 1/width; across a breakpoint, the P difference (that sample's
+ * error is not extrapolated: the samples after it are). */
+static double sample_average(const fg_wm_event *e, double a, double z, int pa, int pz)
 {
     const fg_wm_shape *w = &e->shape;
-    double a = ((double)k - 0.5 - e->center) / e->width;
-    double z = ((double)k + 0.5 - e->center) / e->width;
-    int pa = piece(w, a);
-    if (pa != piece(w, z))
+    if (pa != pz)
         return e->width * (fg_wm_integral(w, z) - fg_wm_integral(w, a));
     if (pa == 0 || pa == 4)
         return 0.0;
@@ -123,13 +121,24 @@ static double sample_average(const fg_wm_event *e, long k)
 /* a merged range is at most the state (3) plus 4 breakpoints (7 each) */
 enum { MAX_RANGE = 32, MAX_RANGES = 5 };
 
-/* Samples lo..hi (lo >= -3) evaluated exactly into y[0 .. hi - lo]. */
+/* Samples lo..hi (lo >= -3) evaluated exactly into y[0 .. hi - lo].
+ * Sample k covers tau from (k - 1/2 - centre) / width to (k + 1/2 -
+ * centre) / width; its right edge is the next one's left, the same number
+ * (k + 1/2 and (k + 1) - 1/2 are exact), so each edge is computed once. */
 static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
 {
+    const fg_wm_shape *w = &e->shape;
+    const double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    double a = ((double)lo - 0.5 - e->center) / e->width;
+    int pa = piece(inner, outer, a);
     bool finite = true;
     for (long k = lo; k <= hi; k++) {
-        y[k - lo] = sample_average(e, k);
+        double z = ((double)k + 0.5 - e->center) / e->width;
+        int pz = piece(inner, outer, z);
+        y[k - lo] = sample_average(e, a, z, pa, pz);
         finite = finite && isfinite(y[k - lo]);
+        a = z;
+        pa = pz;
     }
     return finite;
 }
@@ -171,10 +180,17 @@ static bool breakpoint(double x, double a0, double a1, double a2, breakpoint_tap
            isfinite(t->taps[3]);
 }
 
+/* Whether a breakpoint in sample m changes the third differences of a
+ * block of n (those of m .. m + 3). */
+static bool breakpoint_in_block(long m, long n)
+{
+    return m <= n - 1 && m + 3 >= 0;
+}
+
 static void add_breakpoint(fg_accum *b, const breakpoint_taps *t)
 {
     long m = t->m, n = (long)b->n;
-    if (m > n - 1 || m + 3 < 0)
+    if (!breakpoint_in_block(m, n))
         return;
     for (long q = m < 0 ? -m : 0; q < 4 && m + q < n; q++)
         b->d3[m + q] += t->taps[q];
@@ -186,7 +202,18 @@ static void add_breakpoint(fg_accum *b, const breakpoint_taps *t)
  * terms, so those waves take the exact evaluation around each breakpoint. */
 #define CLOSED_FORM_MIN_SW 2.0
 
-static bool eval_breakpoints(const fg_wm_event *e, breakpoint_taps t[4])
+/* The taps of a breakpoint whose jumps, scaled to samples, are at most
+ * this in size are finite: its u = j + f lies within 2^11 (f is within a
+ * sample, or the rounding of an index of 2^62), so each G stays within
+ * 2^32 times the larger jump and each tap within 2^36 times it. */
+#define TAP_FINITE_JUMP 1e290
+
+/* The taps of the breakpoints; false when one is not finite. When every
+ * tap is certainly finite (TAP_FINITE_JUMP), the taps of a breakpoint that
+ * falls outside the block of n, which adds nothing (add_breakpoint), are
+ * not computed: a wave sounding through a block without a breakpoint in it
+ * costs its state alone. */
+static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4])
 {
     const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, k1 = 2.0 * w->b * psi / s, k2 = 2.0 * w->b / s;
@@ -199,10 +226,19 @@ static bool eval_breakpoints(const fg_wm_event *e, breakpoint_taps t[4])
         {outer, -k1, -k2},
     };
     double wd = e->width;
+    /* the jumps below differ from these in sign alone */
+    bool bounded = fabs(k1 / wd) <= TAP_FINITE_JUMP && fabs(0.5 * k2 / (wd * wd)) <= TAP_FINITE_JUMP;
     bool finite = true;
-    for (int i = 0; i < 4; i++)
-        finite = breakpoint(e->center + jumps[i][0] * wd, 0.0, jumps[i][1] / wd,
-                            0.5 * jumps[i][2] / (wd * wd), &t[i]) && finite;
+    for (int i = 0; i < 4; i++) {
+        double x = e->center + jumps[i][0] * wd;
+        long m = sample_at(x);
+        if (bounded && !breakpoint_in_block(m, n)) {
+            t[i] = (breakpoint_taps){.m = m};
+            continue;
+        }
+        finite = breakpoint(x, 0.0, jumps[i][1] / wd, 0.5 * jumps[i][2] / (wd * wd), &t[i]) &&
+                 finite;
+    }
     return finite;
 }
 
@@ -212,9 +248,18 @@ fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
 {
     if (!fg_wm_event_in_range(e))
         return FG_WAVE_NON_FINITE;
-    const fg_wm_shape *w = &e->shape;
     long first, last;
     fg_wm_event_span(e, &first, &last);
+    return fg_wm_accum_add_span(b, e, first, last);
+}
+
+/* fg_wm_event_in_range but for B is what the caller knows; the span does
+ * not depend on B. */
+fg_wave_status fg_wm_accum_add_span(fg_accum *b, const fg_wm_event *e, long first, long last)
+{
+    if (!isfinite(e->shape.b))
+        return FG_WAVE_NON_FINITE;
+    const fg_wm_shape *w = &e->shape;
     long n = (long)b->n;
     if (fg_wm_event_ended(last))
         return FG_WAVE_DONE;
@@ -225,7 +270,7 @@ fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
     if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
         breakpoint_taps t[4];
         bool state = first < 0;
-        if ((state && !eval_range(e, -3, -1, y[0])) || !eval_breakpoints(e, t))
+        if ((state && !eval_range(e, -3, -1, y[0])) || !eval_breakpoints(e, n, t))
             return FG_WAVE_NON_FINITE;
         b->touched = true;
         if (state)

@@ -61,5 +61,10 @@ static inline bool fg_wm_event_ended(long last)
  * it would add is not finite. */
 fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e);
 
+/* fg_wm_accum_add of an event in range but perhaps for its B (checked),
+ * whose span first .. last (fg_wm_event_span) is known: one wave placed
+ * once and added to several buses at several weights. */
+fg_wave_status fg_wm_accum_add_span(fg_accum *b, const fg_wm_event *e, long first, long last);
+
 
 #endif
