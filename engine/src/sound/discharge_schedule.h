@@ -84,11 +84,14 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event_ear *ear, fg_
         play->bus[k] = ear->bus + k / 2 + (k % 2) * FG_BUS_PLAIN;
     /* the first gain (the ear's, or W's) is 1: its status is the wave's,
      * the same on every channel; a channel of gain 0 gets nothing */
-    uint64_t paths = 0;
-    for (unsigned c = 0; c < count; c++)
-        if (c == 0 || gain[c] != 0.0)
-            paths += (1u + (ear->shadow != 0.0)) * (1u + (next != 0.0 && next != 1.0));
-    *units = 1 + (m->path_units ? paths * m->path_units(ear, play) : 0);
+    *units = 1;
+    if (m->path_units) {
+        uint64_t paths = 0;
+        for (unsigned c = 0; c < count; c++)
+            if (c == 0 || gain[c] != 0.0)
+                paths += (1u + (ear->shadow != 0.0)) * (1u + (next != 0.0 && next != 1.0));
+        *units += paths * m->path_units(ear, play);
+    }
     if (*units > *ctx->work_left)
         return FG_WAVE_SKIPPED;
     *ctx->work_left -= *units;

@@ -202,41 +202,48 @@ static void add_breakpoint(fg_accum *b, const breakpoint_taps *t)
  * terms, so those waves take the exact evaluation around each breakpoint. */
 #define CLOSED_FORM_MIN_SW 2.0
 
-/* The taps of a breakpoint whose jumps, scaled to samples, are at most
- * this in size are finite: its u = j + f lies within 2^11 (f is within a
- * sample, or the rounding of an index of 2^62), so each G stays within
- * 2^32 times the larger jump and each tap within 2^36 times it. */
-#define TAP_FINITE_JUMP 1e290
+/* A wave's numbers are moderate when |B|, psi, the width and its inverse
+ * are at most this and s at least its inverse. With s width >= 2 (the
+ * closed form's) each jump, scaled to samples, is then at most |B| psi or
+ * |B| / (2 width), within 1e200, and every tap finite: u = j + f lies
+ * within 2^11 (f is within a sample, or the rounding of an index below
+ * 2^62), so each G stays within 2^32 times the jump and each tap within
+ * 2^36 times it. */
+#define TAP_MODERATE 1e100
 
-/* The taps of the breakpoints; false when one is not finite. When every
- * tap is certainly finite (TAP_FINITE_JUMP), the taps of a breakpoint that
- * falls outside the block of n, which adds nothing (add_breakpoint), are
- * not computed: a wave sounding through a block without a breakpoint in it
- * costs its state alone. */
+/* The taps of the breakpoints; false when one is not finite. When the
+ * wave's numbers are moderate (TAP_MODERATE), so that every tap is finite,
+ * a breakpoint that falls outside the block of n, which adds nothing
+ * (add_breakpoint), is not evaluated: a wave sounding through a block
+ * without a breakpoint in it costs its state alone. */
 static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4])
 {
     const fg_wm_shape *w = &e->shape;
-    double s = w->s, psi = w->psi, k1 = 2.0 * w->b * psi / s, k2 = 2.0 * w->b / s;
+    double s = w->s, psi = w->psi, wd = e->width;
     double inner = fabs(psi - s), outer = psi + s;
-    /* (tau, jump of p', jump of p'') in ascending tau */
-    double jumps[4][3] = {
-        {-outer, k1, -k2},
-        {-inner, s < psi ? -k1 : k1, k2},
-        {inner, s < psi ? k1 : -k1, k2},
-        {outer, -k1, -k2},
-    };
-    double wd = e->width;
-    /* the jumps below differ from these in sign alone */
-    bool bounded = fabs(k1 / wd) <= TAP_FINITE_JUMP && fabs(0.5 * k2 / (wd * wd)) <= TAP_FINITE_JUMP;
-    bool finite = true;
+    /* in ascending tau: where, and the signs of the jumps of p' (k1) and
+     * p'' (k2) there */
+    const double taus[4] = {-outer, -inner, inner, outer};
+    const double jump1[4] = {1.0, s < psi ? -1.0 : 1.0, s < psi ? 1.0 : -1.0, -1.0};
+    const double jump2[4] = {-1.0, 1.0, 1.0, -1.0};
+    const bool moderate = fabs(w->b) <= TAP_MODERATE && psi <= TAP_MODERATE &&
+                          s >= 1.0 / TAP_MODERATE && wd <= TAP_MODERATE &&
+                          wd >= 1.0 / TAP_MODERATE;
+    double k1 = 0.0, k2 = 0.0;
+    bool jumps = false, finite = true;
     for (int i = 0; i < 4; i++) {
-        double x = e->center + jumps[i][0] * wd;
+        double x = e->center + taus[i] * wd;
         long m = sample_at(x);
-        if (bounded && !breakpoint_in_block(m, n)) {
+        if (moderate && !breakpoint_in_block(m, n)) {
             t[i] = (breakpoint_taps){.m = m};
             continue;
         }
-        finite = breakpoint(x, 0.0, jumps[i][1] / wd, 0.5 * jumps[i][2] / (wd * wd), &t[i]) &&
+        if (!jumps) {
+            k1 = 2.0 * w->b * psi / s;
+            k2 = 2.0 * w->b / s;
+            jumps = true;
+        }
+        finite = breakpoint(x, 0.0, jump1[i] * k1 / wd, 0.5 * (jump2[i] * k2) / (wd * wd), &t[i]) &&
                  finite;
     }
     return finite;
