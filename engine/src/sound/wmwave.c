@@ -61,35 +61,6 @@ double fg_wm_integral(const fg_wm_shape *w, double tau)
     return 4.0 * b * psi * psi * psi / (3.0 * s);
 }
 
-/* The sample holding position x: floor(x + 1/2), without a libm call on
- * targets where floor is not an instruction. */
-static long sample_at(double x)
-{
-    double y = x + 0.5;
-    long m = (long)y;
-    return m - ((double)m > y);
-}
-
-/* Sample positions beyond 2^62 are no block's: their index would not fit. */
-#define SAMPLE_INDEX_LIMIT 4.6e18
-
-bool fg_wm_event_in_range(const fg_wm_event *e)
-{
-    const fg_wm_shape *w = &e->shape;
-    if (!isfinite(w->b) || !(w->s >= 0.0 && w->s <= 1.0) || !(w->psi > 0.0) ||
-        !isfinite(w->psi) || !(e->width > 0.0) || !isfinite(e->width) || !isfinite(e->center))
-        return false;
-    double half = (w->psi + w->s) * e->width;
-    return fabs(e->center) + half < SAMPLE_INDEX_LIMIT;
-}
-
-void fg_wm_event_span(const fg_wm_event *e, long *first, long *last)
-{
-    double half = (e->shape.psi + e->shape.s) * e->width;
-    *first = sample_at(e->center - half);
-    *last = sample_at(e->center + half);
-}
-
 /* Which quadratic piece of p holds tau, for the breakpoints inner =
  * |psi - s| and outer = psi + s: 0 before the wave, 1 the rising shell, 2
  * the middle, 3 the falling shell, 4 after. */
@@ -113,8 +84,12 @@ static double sample_average(const fg_wm_event *e, double a, double z, int pa, i
         return e->width * (fg_wm_integral(w, z) - fg_wm_integral(w, a));
     if (pa == 0 || pa == 4)
         return 0.0;
+    /* the middle piece is linear: its curvature term, 0 h h / 24 with h =
+     * z - a >= 0, is +0 */
+    if (pa == 2)
+        return fg_wm_pressure(w, 0.5 * (a + z)) + 0.0;
     double h = z - a;
-    double curvature = pa == 1 ? -2.0 * w->b / w->s : pa == 3 ? 2.0 * w->b / w->s : 0.0;
+    double curvature = pa == 1 ? -2.0 * w->b / w->s : 2.0 * w->b / w->s;
     return fg_wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
 }
 
@@ -168,7 +143,7 @@ typedef struct breakpoint_taps {
 /* The taps of one breakpoint; false when they are not finite. */
 static bool breakpoint(double x, double a0, double a1, double a2, breakpoint_taps *t)
 {
-    long m = sample_at(x);
+    long m = fg_wm_sample_at(x);
     double f = (double)m + 0.5 - x, g[4];
     for (int j = 0; j < 4; j++) {
         double u = j + f;
@@ -233,7 +208,7 @@ static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4])
     bool jumps = false, finite = true;
     for (int i = 0; i < 4; i++) {
         double x = e->center + taus[i] * wd;
-        long m = sample_at(x);
+        long m = fg_wm_sample_at(x);
         if (moderate && !breakpoint_in_block(m, n)) {
             t[i] = (breakpoint_taps){.m = m};
             continue;
@@ -298,7 +273,7 @@ fg_wave_status fg_wm_accum_add_span(fg_accum *b, const fg_wm_event *e, long firs
         ranges = 1;
     }
     for (int i = 0; i < 4; i++) {
-        long m = sample_at(e->center + taus[i] * e->width);
+        long m = fg_wm_sample_at(e->center + taus[i] * e->width);
         long a = m - 3 < -3 ? -3 : m - 3;
         long z = m + 3 > n - 1 ? n - 1 : m + 3;
         if (a > z)
