@@ -186,12 +186,12 @@ static void add_breakpoint(fg_accum *b, const breakpoint_taps *t)
  * 2^36 times it. */
 #define TAP_MODERATE 1e100
 
-/* The taps of the breakpoints; false when one is not finite. When the
- * wave's numbers are moderate (TAP_MODERATE), so that every tap is finite,
- * a breakpoint that falls outside the block of n, which adds nothing
- * (add_breakpoint), is not evaluated: a wave sounding through a block
- * without a breakpoint in it costs its state alone. */
-static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4])
+/* The taps of the breakpoints into t[0 .. *count); false when one is not
+ * finite. When the wave's numbers are moderate (TAP_MODERATE), so that
+ * every tap is finite, a breakpoint that falls outside the block of n,
+ * which would add nothing (add_breakpoint), is left out: a wave sounding
+ * through a block without a breakpoint in it costs its state alone. */
+static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4], int *count)
 {
     const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, wd = e->width;
@@ -205,20 +205,18 @@ static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4])
                           s >= 1.0 / TAP_MODERATE && wd <= TAP_MODERATE &&
                           wd >= 1.0 / TAP_MODERATE;
     double k1 = 0.0, k2 = 0.0;
-    bool jumps = false, finite = true;
+    bool finite = true;
+    *count = 0;
     for (int i = 0; i < 4; i++) {
         double x = e->center + taus[i] * wd;
-        long m = fg_wm_sample_at(x);
-        if (moderate && !breakpoint_in_block(m, n)) {
-            t[i] = (breakpoint_taps){.m = m};
+        if (moderate && !breakpoint_in_block(fg_wm_sample_at(x), n))
             continue;
-        }
-        if (!jumps) {
+        if (*count == 0) {
             k1 = 2.0 * w->b * psi / s;
             k2 = 2.0 * w->b / s;
-            jumps = true;
         }
-        finite = breakpoint(x, 0.0, jump1[i] * k1 / wd, 0.5 * (jump2[i] * k2) / (wd * wd), &t[i]) &&
+        finite = breakpoint(x, 0.0, jump1[i] * k1 / wd, 0.5 * (jump2[i] * k2) / (wd * wd),
+                            &t[(*count)++]) &&
                  finite;
     }
     return finite;
@@ -251,13 +249,14 @@ fg_wave_status fg_wm_accum_add_span(fg_accum *b, const fg_wm_event *e, long firs
     double y[MAX_RANGES][MAX_RANGE];
     if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
         breakpoint_taps t[4];
+        int count;
         bool state = first < 0;
-        if ((state && !eval_range(e, -3, -1, y[0])) || !eval_breakpoints(e, n, t))
+        if ((state && !eval_range(e, -3, -1, y[0])) || !eval_breakpoints(e, n, t, &count))
             return FG_WAVE_NON_FINITE;
         b->touched = true;
         if (state)
             add_range(b, -3, -1, y[0]);
-        for (int i = 0; i < 4; i++)
+        for (int i = 0; i < count; i++)
             add_breakpoint(b, &t[i]);
         return FG_WAVE_SOUNDING;
     }
