@@ -45,9 +45,9 @@ bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
     fg_discharge d = {.nodes = nodes, .node_count = count, .sound = *params, .strokes = 1,
                       .emit_time_s = 0, .seed = 1, .propagation = *prop, .model = model};
     bench_run run = {0};
-    double t0 = bench_now_s();
+    double t0 = bench_now_s(), c0 = bench_cpu_s();
     check(fg_engine_post(e, &d, NULL), "post");
-    double t1 = bench_now_s();
+    double t1 = bench_now_s(), c1 = bench_cpu_s();
     fg_engine_report st = {0};
     uint64_t frames = 0;
     while (st.finished == 0) {
@@ -55,9 +55,11 @@ bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
         frames += block;
         fg_engine_get_report(e, &st);
     }
-    double t2 = bench_now_s();
+    double t2 = bench_now_s(), c2 = bench_cpu_s();
     run.post_s = t1 - t0;
     run.render_s = t2 - t1;
+    run.post_cpu_s = c1 - c0;
+    run.render_cpu_s = c2 - c1;
     run.sound_s = (double)frames / 48000.0;
     for (uint32_t ch = 0; ch < cfg.channels; ch++)
         free(planes[ch]);

@@ -10,6 +10,8 @@
 typedef struct bench_run {
     double post_s;     /* fg_engine_post: preparation and the arrival sort */
     double render_s;   /* every fg_engine_render call until the voice ended */
+    double post_cpu_s; /* the same two in the thread's CPU time */
+    double render_cpu_s;
     double sound_s;    /* length of the sound produced */
 } bench_run;
 

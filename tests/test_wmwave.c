@@ -642,6 +642,42 @@ static void test_tiny_s(void **state)
     }
 }
 
+/* ---------------------------------------------------------------------------
+ * 7. A wave whose breakpoint taps overflow is refused in every block it
+ * sounds in, a block with none of its breakpoints in it too (where the
+ * accumulator skips breakpoints of moderate waves): its state there is
+ * finite, its taps are not. A moderate twin sounds in the same block and
+ * matches the direct sum. */
+static void test_overflowing_taps_refused_mid_wave(void **state)
+{
+    (void)state;
+    enum { N = 64 };
+    double d3[N], y[N];
+    /* closed form (s width = 50); breakpoints near samples +-950 and
+     * +-1050, none in the block; the state's samples lie in the linear
+     * middle piece near tau = 0, where -4 B tau stays finite */
+    fg_wm_event e = {.shape = shape_of(1.0, 0.5, 10.0), .center = 1.5, .width = 100.0};
+    e.shape.b = 1e307; /* 2 B psi / s overflows */
+    fg_accum blk;
+    fg_accum_begin(&blk, d3, N);
+    CHECK(fg_wm_event_in_range(&e), "the wave is in range");
+    CHECK(fg_wm_accum_add(&blk, &e) == FG_WAVE_NON_FINITE, "overflowing taps were accepted");
+    CHECK(!blk.touched, "a refused wave touched the block");
+
+    e.shape.b = 1.0;
+    double ref[N] = {0};
+    ref_wm_add_direct(&e, ref, N);
+    CHECK(fg_wm_accum_add(&blk, &e) == FG_WAVE_SOUNDING, "the moderate twin does not sound");
+    rebuild(&blk, y);
+    double peak = 0;
+    for (int k = 0; k < N; k++)
+        peak = fmax(peak, fabs(ref[k]));
+    CHECK(peak > 0, "a silent reference");
+    for (int k = 0; k < N; k++)
+        CHECK(fabs(y[k] - ref[k]) <= 1e-10 * peak, "sample %d: %.15g, direct %.15g", k, y[k],
+              ref[k]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -654,6 +690,7 @@ int main(void)
         cmocka_unit_test(test_block_matches_direct),
         cmocka_unit_test(test_block_no_drift),
         cmocka_unit_test(test_tiny_s),
+        cmocka_unit_test(test_overflowing_taps_refused_mid_wave),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

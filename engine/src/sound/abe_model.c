@@ -67,20 +67,28 @@ static uint64_t abe_path_units(const fg_event_ear *ear, const fg_event_play *pla
     return (terms + ABE_TERMS_PER_UNIT - 1) / ABE_TERMS_PER_UNIT;
 }
 
-static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
-                              const fg_event_play *play, long *first, long *last)
+static fg_wave_status abe_place(const fg_event *ev, const fg_event_ear *ear,
+                                const fg_event_play *play, fg_wave_place *at)
 {
     (void)ev;
-    const double fs = play->fs_hz;
-    fg_abe_wave w = abe_placed(ear, play);
-    if (!fg_abe_wave_in_range(&w, fs))
+    at->abe = abe_placed(ear, play);
+    if (!fg_abe_wave_in_range(&at->abe, play->fs_hz))
         return FG_WAVE_NON_FINITE;
     int64_t a, b;
+    fg_abe_wave_span(&at->abe, play->fs_hz, &a, &b);
+    at->first = (long)a;
+    at->last = (long)b;
+    return b < 0 ? FG_WAVE_DONE : FG_WAVE_SOUNDING;
+}
+
+static fg_wave_status abe_add(const fg_event_ear *ear, const fg_event_play *play,
+                              const fg_wave_place *at)
+{
+    (void)ear;
+    const double fs = play->fs_hz;
+    fg_abe_wave w = at->abe;
+    int64_t a, b;
     fg_abe_wave_span(&w, fs, &a, &b);
-    *first = (long)a;
-    *last = (long)b;
-    if (b < 0)
-        return FG_WAVE_DONE;
     if (a >= (int64_t)play->frames)
         return FG_WAVE_PENDING;
     double peak = w.peak_pa;
@@ -97,7 +105,7 @@ static fg_wave_status abe_add(const fg_event *ev, const fg_event_ear *ear,
 
 static bool abe_render(void *voice, bool stopping, const fg_block_context *block)
 {
-    return fg_discharge_render_with(voice, stopping, block, abe_add);
+    return fg_discharge_render_with(voice, stopping, block, abe_place, abe_add);
 }
 
 static const fg_discharge_model abe_model = {

@@ -77,6 +77,16 @@ typedef struct fg_ear_path {
 
 #define FG_PLAY_BUSES 4
 
+/* An ear's wave as one instance places it in one block (the model's
+ * place, discharge_schedule.h). */
+typedef struct fg_wave_place {
+    union {
+        fg_wm_event wm;   /* wm_model.c */
+        fg_abe_wave abe;  /* abe_model.c */
+    };
+    long first, last;     /* its first and last sample, relative to the block */
+} fg_wave_place;
+
 /* Where ear ch of an event is added in this block, for one instance. */
 typedef struct fg_event_play {
     const fg_engine_config *cfg; /* the layout */
@@ -95,8 +105,8 @@ typedef struct fg_event_play {
 } fg_event_play;
 
 /* What makes a discharge model, besides its render: fg_discharge_render_with
- * (discharge_schedule.h) bound to the function that adds an event's ear to
- * the buses. */
+ * (discharge_schedule.h) bound to the functions that place an event's ear
+ * in the block and add it to the buses. */
 typedef struct fg_discharge_model {
     /* Segments per source point, for a tree of this many segments. */
     size_t (*stride)(size_t segments);
@@ -112,8 +122,9 @@ typedef struct fg_discharge_model {
     bool (*finite)(const fg_event *ev, const fg_event_ear *ear, double fs_hz, double c_m_s);
     /* The work bound's price (fg_engine_config.work_per_frame), beyond
      * the one unit every ear's evaluation costs: the units of adding an
-     * ear's wave to one bus of one channel over the block (play's); NULL
-     * for a wave of a few closed-form terms whatever its length. Units are
+     * ear's wave to one bus of one channel over the block (play's), 0 for
+     * a wave that has ended before it; NULL for a wave of a few
+     * closed-form terms whatever its length. Units are
      * priced by their measured CPU time (docs/limits.md). [audio-thread] */
     uint64_t (*path_units)(const fg_event_ear *ear, const fg_event_play *play);
 } fg_discharge_model;

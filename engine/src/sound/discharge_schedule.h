@@ -6,7 +6,10 @@
  * moving listener shifts any start by at most (displacement + ear spacing)
  * / c, so an event joins an instance's window once its post-time start,
  * less that look-ahead, falls before the block's end. Events leave the
- * window in order once their waveform has ended for every ear.
+ * window in order once their waveform has ended for every ear; one that
+ * has ended behind a longer one still sounding stays in the window, where
+ * each ear costs the model's placing of its span (fg_discharge_place_fn),
+ * not an add, and the unit of the work bound it always cost.
  *
  * One implementation for both models, written once here and instantiated
  * by each model's render with its own add function (wm_model.c,
@@ -17,11 +20,24 @@
 
 #include "discharge_internal.h"
 
-/* Adds ear play->ch of ev, as that ear hears it, to the buses
- * (fg_discharge_model's add). */
-typedef fg_wave_status (*fg_discharge_add_fn)(const fg_event *ev, const fg_event_ear *ear,
-                                              const fg_event_play *play, long *first,
-                                              long *last);
+/* Places an ear's wave of ev in the block as play's instance hears it:
+ * writes *at and returns FG_WAVE_NON_FINITE when the wave is out of range
+ * (at->first and last unspecified), FG_WAVE_DONE when it ended before the
+ * block, so that its add would add nothing on any bus or channel, else
+ * FG_WAVE_SOUNDING (the add tells a pending wave from a sounding one). An
+ * ear that has ended then costs the few terms of its span, not the
+ * layout's gains and an add per channel and bus. Exact because every
+ * weight an add scales a wave by (a layout gain, the head shadow's alpha -
+ * 1, a band's share) lies in [-1, 1]: a wave in range stays in range on
+ * every bus. The model's path_units of a wave that has ended is 0, so its
+ * price is the one unit (fg_discharge_price_ended). */
+typedef fg_wave_status (*fg_discharge_place_fn)(const fg_event *ev, const fg_event_ear *ear,
+                                                const fg_event_play *play, fg_wave_place *at);
+
+/* Adds ear play->ch's wave, placed at *at (FG_WAVE_SOUNDING from the
+ * place), to the buses (fg_discharge_model's add). */
+typedef fg_wave_status (*fg_discharge_add_fn)(const fg_event_ear *ear, const fg_event_play *play,
+                                              const fg_wave_place *at);
 
 /* One block of one voice, as its instances see it. */
 typedef struct fg_discharge_block {
@@ -43,21 +59,21 @@ static inline fg_event *fg_instance_event(fg_discharge_voice *v, const fg_instan
     return &v->events[in->main_only ? v->main_index[k] : k];
 }
 
-/* Adds ear ch of event ev, as that ear hears it, to the buses through
- * play (the instance's), on each output channel the layout sends it to
- * with the layout's gain (spatial/layout_internal.h), split between its
- * two distance bands: whole to each band's plain bus, and alpha - 1 of it
- * to the head-shadowed twin (spatial/spherical_head_internal.h). Its price
+/* Adds ear ch of an event, as that ear hears it, placed at *at (placed:
+ * the place's status, not FG_WAVE_DONE), to the buses through play (the
+ * instance's), on each output channel the layout sends it to with the
+ * layout's gain (spatial/layout_internal.h), split between its two
+ * distance bands: whole to each band's plain bus, and alpha - 1 of it to
+ * the head-shadowed twin (spatial/spherical_head_internal.h). Its price
  * (one unit and the model's path_units for each bus and channel) is spent
- * from the block's work first: when it does not fit, nothing is added and FG_WAVE_SKIPPED returned with the price in
- * *units. Returns its status and its first and last sample relative to the
- * block. */
-static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg_event_ear *ear,
-                                                    fg_event_play *play, unsigned ch,
-                                                    const fg_block_context *ctx,
+ * from the block's work first: when it does not fit, nothing is added and
+ * FG_WAVE_SKIPPED returned with the price in *units. Returns its status. */
+static inline fg_wave_status fg_discharge_add_event(const fg_event_ear *ear, fg_event_play *play,
+                                                    unsigned ch, const fg_block_context *ctx,
                                                     const fg_discharge_model *m,
-                                                    fg_discharge_add_fn add, long *first,
-                                                    long *last, uint64_t *units)
+                                                    fg_discharge_add_fn add,
+                                                    fg_wave_status placed,
+                                                    const fg_wave_place *at, uint64_t *units)
 {
     const double dir[3] = {ear->dir[0], ear->dir[1], ear->dir[2]};
     double gain[FG_LAYOUT_CHANNELS_MAX];
@@ -68,14 +84,19 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg
         play->bus[k] = ear->bus + k / 2 + (k % 2) * FG_BUS_PLAIN;
     /* the first gain (the ear's, or W's) is 1: its status is the wave's,
      * the same on every channel; a channel of gain 0 gets nothing */
-    uint64_t paths = 0;
-    for (unsigned c = 0; c < count; c++)
-        if (c == 0 || gain[c] != 0.0)
-            paths += (1u + (ear->shadow != 0.0)) * (1u + (next != 0.0 && next != 1.0));
-    *units = 1 + (m->path_units ? paths * m->path_units(ear, play) : 0);
+    *units = 1;
+    if (m->path_units) {
+        uint64_t paths = 0;
+        for (unsigned c = 0; c < count; c++)
+            if (c == 0 || gain[c] != 0.0)
+                paths += (1u + (ear->shadow != 0.0)) * (1u + (next != 0.0 && next != 1.0));
+        *units += paths * m->path_units(ear, play);
+    }
     if (*units > *ctx->work_left)
         return FG_WAVE_SKIPPED;
     *ctx->work_left -= *units;
+    if (placed == FG_WAVE_NON_FINITE)
+        return FG_WAVE_NON_FINITE;
     fg_wave_status st = FG_WAVE_DONE;
     for (unsigned c = 0; c < count; c++) {
         if (c > 0 && gain[c] == 0.0)
@@ -83,7 +104,7 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg
         play->ch = out + c;
         for (unsigned k = 0; k < FG_PLAY_BUSES; k++)
             play->share[k] = gain[c] * (k % 2 ? ear->shadow : 1.0) * (k / 2 ? next : 1.0 - next);
-        fg_wave_status here = add(ev, ear, play, first, last);
+        fg_wave_status here = add(ear, play, at);
         if (c == 0 || here == FG_WAVE_NON_FINITE)
             st = here;
         if (here == FG_WAVE_NON_FINITE)
@@ -92,12 +113,26 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event *ev, const fg
     return st;
 }
 
+/* The price of an ear that has ended (fg_discharge_place_fn): its one
+ * unit, spent from the block's work as fg_discharge_add_event would, or
+ * FG_WAVE_SKIPPED when it does not fit. */
+static inline fg_wave_status fg_discharge_price_ended(const fg_block_context *ctx,
+                                                      uint64_t *units)
+{
+    *units = 1;
+    if (*ctx->work_left < 1)
+        return FG_WAVE_SKIPPED;
+    *ctx->work_left -= 1;
+    return FG_WAVE_DONE;
+}
+
 /* Renders one instance; returns true once all its events are done. Stops
  * at the first ear whose price does not fit the block's work (it and the
  * unit of each ear after it are counted skipped) or a wave that is not
  * finite (v->non_finite). */
 static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instance *in,
                                                 const fg_discharge_block *vb,
+                                                fg_discharge_place_fn place,
                                                 fg_discharge_add_fn add)
 {
     const fg_block_context *ctx = vb->ctx;
@@ -132,7 +167,6 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         bool done = true;
         long lost_here = 0;
         for (unsigned ch = 0; ch < ears; ch++) {
-            long a = 0, b = 0; /* written by fg_discharge_add_event (count >= 1) */
             const fg_event_ear *ear = &ev->ear[ch];
             fg_event_ear heard;
             if (vb->moving) {
@@ -140,9 +174,13 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
                                 ctx->buses, &heard);
                 ear = &heard;
             }
+            fg_wave_place at;
+            const fg_wave_status placed = place(ev, ear, &play, &at);
             uint64_t units;
-            fg_wave_status st =
-                fg_discharge_add_event(ev, ear, &play, ch, ctx, v->model, add, &a, &b, &units);
+            fg_wave_status st = placed == FG_WAVE_DONE
+                                    ? fg_discharge_price_ended(ctx, &units)
+                                    : fg_discharge_add_event(ear, &play, ch, ctx, v->model, add,
+                                                             placed, &at, &units);
             if (st == FG_WAVE_NON_FINITE) {
                 v->non_finite = true;
                 return false;
@@ -154,6 +192,7 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
             }
             if (st != FG_WAVE_DONE)
                 done = false;
+            const long a = at.first, b = at.last;
             long missed = k >= first_new && a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
             if (missed > lost_here)
                 lost_here = missed;
@@ -180,13 +219,14 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
  * whose wave turned non-finite is retired at once: what it added before
  * was finite, and it adds nothing more. */
 static inline bool fg_discharge_render_with(void *voice, bool stopping,
-                                            const fg_block_context *ctx, fg_discharge_add_fn add)
+                                            const fg_block_context *ctx,
+                                            fg_discharge_place_fn place, fg_discharge_add_fn add)
 {
     fg_discharge_voice *v = voice;
     fg_discharge_block vb;
     fg_discharge_begin_block(v, stopping, ctx, &vb);
     for (uint32_t i = 0; i < v->inst_count && !v->non_finite;) {
-        if (fg_discharge_render_instance(v, &v->inst[i], &vb, add))
+        if (fg_discharge_render_instance(v, &v->inst[i], &vb, place, add))
             v->inst[i] = v->inst[--v->inst_count];
         else
             i++;

@@ -40,25 +40,33 @@ static bool wm_finite(const fg_event *ev, const fg_event_ear *ear, double fs_hz,
 
 /* A moving ear hears the wave stretched by its rate: tau advances
  * (c - dr/dt) / l per second, so a unit of tau lasts rate l / c. */
-static fg_wave_status wm_add(const fg_event *ev, const fg_event_ear *ear,
-                             const fg_event_play *play, long *first, long *last)
+static fg_wave_status wm_place(const fg_event *ev, const fg_event_ear *ear,
+                               const fg_event_play *play, fg_wave_place *at)
 {
-    const unsigned ch = play->ch;
     const double fs = play->fs_hz;
-    fg_wm_event we = {
+    at->wm = (fg_wm_event){
         .shape = ear->wm,
         .center = play->origin_frame + (play->offset_s + ear->center_s) * fs,
         .width = fs * ev->half_len_m / play->c_m_s * ear->rate,
     };
-    if (!fg_wm_event_in_range(&we))
+    if (!fg_wm_event_in_range(&at->wm))
         return FG_WAVE_NON_FINITE;
-    fg_wm_event_span(&we, first, last);
+    fg_wm_event_span(&at->wm, &at->first, &at->last);
+    return fg_wm_event_ended(at->last) ? FG_WAVE_DONE : FG_WAVE_SOUNDING;
+}
+
+static fg_wave_status wm_add(const fg_event_ear *ear, const fg_event_play *play,
+                             const fg_wave_place *at)
+{
+    const unsigned ch = play->ch;
+    fg_wm_event we = at->wm;
     fg_wave_status status = FG_WAVE_DONE;
     for (int k = 0; k < FG_PLAY_BUSES; k++) {
         if (play->share[k] == 0.0)
             continue;
         we.shape.b = ear->wm.b * play->share[k];
-        status = fg_wm_accum_add(fg_bus_accum(play->buses, play->bus[k], ch), &we);
+        status = fg_wm_accum_add_span(fg_bus_accum(play->buses, play->bus[k], ch), &we,
+                                      at->first, at->last);
         if (status == FG_WAVE_NON_FINITE)
             break;
     }
@@ -67,7 +75,7 @@ static fg_wave_status wm_add(const fg_event *ev, const fg_event_ear *ear,
 
 static bool wm_render(void *voice, bool stopping, const fg_block_context *block)
 {
-    return fg_discharge_render_with(voice, stopping, block, wm_add);
+    return fg_discharge_render_with(voice, stopping, block, wm_place, wm_add);
 }
 
 static const fg_discharge_model wm_model = {

@@ -61,75 +61,59 @@ double fg_wm_integral(const fg_wm_shape *w, double tau)
     return 4.0 * b * psi * psi * psi / (3.0 * s);
 }
 
-/* The sample holding position x: floor(x + 1/2), without a libm call on
- * targets where floor is not an instruction. */
-static long sample_at(double x)
+/* Which quadratic piece of p holds tau, for the breakpoints inner =
+ * |psi - s| and outer = psi + s: 0 before the wave, 1 the rising shell, 2
+ * the middle, 3 the falling shell, 4 after. */
+static int piece(double inner, double outer, double tau)
 {
-    double y = x + 0.5;
-    long m = (long)y;
-    return m - ((double)m > y);
-}
-
-/* Sample positions beyond 2^62 are no block's: their index would not fit. */
-#define SAMPLE_INDEX_LIMIT 4.6e18
-
-bool fg_wm_event_in_range(const fg_wm_event *e)
-{
-    const fg_wm_shape *w = &e->shape;
-    if (!isfinite(w->b) || !(w->s >= 0.0 && w->s <= 1.0) || !(w->psi > 0.0) ||
-        !isfinite(w->psi) || !(e->width > 0.0) || !isfinite(e->width) || !isfinite(e->center))
-        return false;
-    double half = (w->psi + w->s) * e->width;
-    return fabs(e->center) + half < SAMPLE_INDEX_LIMIT;
-}
-
-void fg_wm_event_span(const fg_wm_event *e, long *first, long *last)
-{
-    double half = (e->shape.psi + e->shape.s) * e->width;
-    *first = sample_at(e->center - half);
-    *last = sample_at(e->center + half);
-}
-
-/* Which quadratic piece of p holds tau: 0 before the wave, 1 the rising
- * shell, 2 the middle, 3 the falling shell, 4 after. */
-static int piece(const fg_wm_shape *w, double tau)
-{
-    double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
     return tau <= -outer ? 0 : tau <= -inner ? 1 : tau <= inner ? 2 : tau <= outer ? 3 : 4;
 }
 
-/* The average over sample k, accurate to rounding of the peak. A difference
- * of P at the two edges loses digits when the wave spans many samples (P is
- * ~ psi times the peak, the difference ~ 1/width of it), and the block
- * accumulator extrapolates those errors quadratically across the block. So
- * inside one piece the average of the quadratic is taken directly:
- * p(mid) + p'' h^2 / 24, h = 1/width; across a breakpoint, the P difference
- * (that sample's error is not extrapolated: the samples after it are). */
-static double sample_average(const fg_wm_event *e, long k)
+/* The average over the sample from tau = a (in piece pa) to z (in pz),
+ * accurate to rounding of the peak. A difference of P at the two edges
+ * loses digits when the wave spans many samples (P is ~ psi times the
+ * peak, the difference ~ 1/width of it), and the block accumulator
+ * extrapolates those errors quadratically across the block. So inside one
+ * piece the average of the quadratic is taken directly: p(mid) + p'' h^2
+ * / 24, h = 1/width; across a breakpoint, the P difference (that sample's
+ * error is not extrapolated: the samples after it are). */
+static double sample_average(const fg_wm_event *e, double a, double z, int pa, int pz)
 {
     const fg_wm_shape *w = &e->shape;
-    double a = ((double)k - 0.5 - e->center) / e->width;
-    double z = ((double)k + 0.5 - e->center) / e->width;
-    int pa = piece(w, a);
-    if (pa != piece(w, z))
+    if (pa != pz)
         return e->width * (fg_wm_integral(w, z) - fg_wm_integral(w, a));
     if (pa == 0 || pa == 4)
         return 0.0;
+    /* the middle piece is linear: its curvature term, 0 h h / 24 with h =
+     * z - a >= 0, is +0 */
+    if (pa == 2)
+        return fg_wm_pressure(w, 0.5 * (a + z)) + 0.0;
     double h = z - a;
-    double curvature = pa == 1 ? -2.0 * w->b / w->s : pa == 3 ? 2.0 * w->b / w->s : 0.0;
+    double curvature = pa == 1 ? -2.0 * w->b / w->s : 2.0 * w->b / w->s;
     return fg_wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
 }
 
 /* a merged range is at most the state (3) plus 4 breakpoints (7 each) */
 enum { MAX_RANGE = 32, MAX_RANGES = 5 };
 
-/* Samples lo..hi (lo >= -3) evaluated exactly into y[0 .. hi - lo]. */
+/* Samples lo..hi (lo >= -3) evaluated exactly into y[0 .. hi - lo].
+ * Sample k covers tau from (k - 1/2 - centre) / width to (k + 1/2 -
+ * centre) / width; its right edge is the next one's left, the same number
+ * (k + 1/2 and (k + 1) - 1/2 are exact), so each edge is computed once. */
 static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
 {
+    const fg_wm_shape *w = &e->shape;
+    const double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    double a = ((double)lo - 0.5 - e->center) / e->width;
+    int pa = piece(inner, outer, a);
     bool finite = true;
     for (long k = lo; k <= hi; k++) {
-        y[k - lo] = sample_average(e, k);
+        double z = ((double)k + 0.5 - e->center) / e->width;
+        int pz = piece(inner, outer, z);
+        y[k - lo] = sample_average(e, a, z, pa, pz);
         finite = finite && isfinite(y[k - lo]);
+        a = z;
+        pa = pz;
     }
     return finite;
 }
@@ -159,7 +143,7 @@ typedef struct breakpoint_taps {
 /* The taps of one breakpoint; false when they are not finite. */
 static bool breakpoint(double x, double a0, double a1, double a2, breakpoint_taps *t)
 {
-    long m = sample_at(x);
+    long m = fg_wm_sample_at(x);
     double f = (double)m + 0.5 - x, g[4];
     for (int j = 0; j < 4; j++) {
         double u = j + f;
@@ -171,10 +155,17 @@ static bool breakpoint(double x, double a0, double a1, double a2, breakpoint_tap
            isfinite(t->taps[3]);
 }
 
+/* Whether a breakpoint in sample m changes the third differences of a
+ * block of n (those of m .. m + 3). */
+static bool breakpoint_in_block(long m, long n)
+{
+    return m <= n - 1 && m + 3 >= 0;
+}
+
 static void add_breakpoint(fg_accum *b, const breakpoint_taps *t)
 {
     long m = t->m, n = (long)b->n;
-    if (m > n - 1 || m + 3 < 0)
+    if (!breakpoint_in_block(m, n))
         return;
     for (long q = m < 0 ? -m : 0; q < 4 && m + q < n; q++)
         b->d3[m + q] += t->taps[q];
@@ -186,23 +177,48 @@ static void add_breakpoint(fg_accum *b, const breakpoint_taps *t)
  * terms, so those waves take the exact evaluation around each breakpoint. */
 #define CLOSED_FORM_MIN_SW 2.0
 
-static bool eval_breakpoints(const fg_wm_event *e, breakpoint_taps t[4])
+/* A wave's numbers are moderate when |B|, psi, the width and its inverse
+ * are at most this and s at least its inverse. With s width >= 2 (the
+ * closed form's) each jump, scaled to samples, is then at most |B| psi or
+ * |B| / (2 width), within 1e200, and every tap finite: u = j + f lies
+ * within 2^11 (f is within a sample, or the rounding of an index below
+ * 2^62), so each G stays within 2^32 times the jump and each tap within
+ * 2^36 times it. */
+#define TAP_MODERATE 1e100
+
+/* The taps of the breakpoints into t[0 .. *count); false when one is not
+ * finite. When the wave's numbers are moderate (TAP_MODERATE), so that
+ * every tap is finite, a breakpoint that falls outside the block of n,
+ * which would add nothing (add_breakpoint), is left out: a wave sounding
+ * through a block without a breakpoint in it costs its state alone. */
+static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4], int *count)
 {
     const fg_wm_shape *w = &e->shape;
-    double s = w->s, psi = w->psi, k1 = 2.0 * w->b * psi / s, k2 = 2.0 * w->b / s;
+    double s = w->s, psi = w->psi, wd = e->width;
     double inner = fabs(psi - s), outer = psi + s;
-    /* (tau, jump of p', jump of p'') in ascending tau */
-    double jumps[4][3] = {
-        {-outer, k1, -k2},
-        {-inner, s < psi ? -k1 : k1, k2},
-        {inner, s < psi ? k1 : -k1, k2},
-        {outer, -k1, -k2},
-    };
-    double wd = e->width;
+    /* in ascending tau: where, and the signs of the jumps of p' (k1) and
+     * p'' (k2) there */
+    const double taus[4] = {-outer, -inner, inner, outer};
+    const double jump1[4] = {1.0, s < psi ? -1.0 : 1.0, s < psi ? 1.0 : -1.0, -1.0};
+    const double jump2[4] = {-1.0, 1.0, 1.0, -1.0};
+    const bool moderate = fabs(w->b) <= TAP_MODERATE && psi <= TAP_MODERATE &&
+                          s >= 1.0 / TAP_MODERATE && wd <= TAP_MODERATE &&
+                          wd >= 1.0 / TAP_MODERATE;
+    double k1 = 0.0, k2 = 0.0;
     bool finite = true;
-    for (int i = 0; i < 4; i++)
-        finite = breakpoint(e->center + jumps[i][0] * wd, 0.0, jumps[i][1] / wd,
-                            0.5 * jumps[i][2] / (wd * wd), &t[i]) && finite;
+    *count = 0;
+    for (int i = 0; i < 4; i++) {
+        double x = e->center + taus[i] * wd;
+        if (moderate && !breakpoint_in_block(fg_wm_sample_at(x), n))
+            continue;
+        if (*count == 0) {
+            k1 = 2.0 * w->b * psi / s;
+            k2 = 2.0 * w->b / s;
+        }
+        finite = breakpoint(x, 0.0, jump1[i] * k1 / wd, 0.5 * (jump2[i] * k2) / (wd * wd),
+                            &t[(*count)++]) &&
+                 finite;
+    }
     return finite;
 }
 
@@ -212,11 +228,20 @@ fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
 {
     if (!fg_wm_event_in_range(e))
         return FG_WAVE_NON_FINITE;
-    const fg_wm_shape *w = &e->shape;
     long first, last;
     fg_wm_event_span(e, &first, &last);
+    return fg_wm_accum_add_span(b, e, first, last);
+}
+
+/* fg_wm_event_in_range but for B is what the caller knows; the span does
+ * not depend on B. */
+fg_wave_status fg_wm_accum_add_span(fg_accum *b, const fg_wm_event *e, long first, long last)
+{
+    if (!isfinite(e->shape.b))
+        return FG_WAVE_NON_FINITE;
+    const fg_wm_shape *w = &e->shape;
     long n = (long)b->n;
-    if (last < -3)
+    if (fg_wm_event_ended(last))
         return FG_WAVE_DONE;
     if (first >= n)
         return FG_WAVE_PENDING;
@@ -224,13 +249,14 @@ fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
     double y[MAX_RANGES][MAX_RANGE];
     if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
         breakpoint_taps t[4];
+        int count;
         bool state = first < 0;
-        if ((state && !eval_range(e, -3, -1, y[0])) || !eval_breakpoints(e, t))
+        if ((state && !eval_range(e, -3, -1, y[0])) || !eval_breakpoints(e, n, t, &count))
             return FG_WAVE_NON_FINITE;
         b->touched = true;
         if (state)
             add_range(b, -3, -1, y[0]);
-        for (int i = 0; i < 4; i++)
+        for (int i = 0; i < count; i++)
             add_breakpoint(b, &t[i]);
         return FG_WAVE_SOUNDING;
     }
@@ -246,7 +272,7 @@ fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
         ranges = 1;
     }
     for (int i = 0; i < 4; i++) {
-        long m = sample_at(e->center + taus[i] * e->width);
+        long m = fg_wm_sample_at(e->center + taus[i] * e->width);
         long a = m - 3 < -3 ? -3 : m - 3;
         long z = m + 3 > n - 1 ? n - 1 : m + 3;
         if (a > z)

@@ -4,6 +4,7 @@
 #ifndef FULGUR_WMWAVE_INTERNAL_H
 #define FULGUR_WMWAVE_INTERNAL_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -38,12 +39,47 @@ double fg_wm_pressure(const fg_wm_shape *w, double tau);
  * P is even in tau and vanishes outside [-(psi+s), psi+s]. */
 double fg_wm_integral(const fg_wm_shape *w, double tau);
 
+/* The sample holding position x: floor(x + 1/2), without a libm call on
+ * targets where floor is not an instruction. */
+static inline long fg_wm_sample_at(double x)
+{
+    double y = x + 0.5;
+    long m = (long)y;
+    return m - ((double)m > y);
+}
+
+/* Sample positions beyond 2^62 are no block's: their index would not fit. */
+#define FG_WM_SAMPLE_INDEX_LIMIT 4.6e18
+
 /* Whether e's numbers are finite and every sample it touches has an index
- * a long holds: what fg_wm_event_span and fg_wm_accum_add need. */
-bool fg_wm_event_in_range(const fg_wm_event *e);
+ * a long holds: what fg_wm_event_span and fg_wm_accum_add need. Inline:
+ * the audio thread places every sounding wave once per block and ear. */
+static inline bool fg_wm_event_in_range(const fg_wm_event *e)
+{
+    const fg_wm_shape *w = &e->shape;
+    if (!isfinite(w->b) || !(w->s >= 0.0 && w->s <= 1.0) || !(w->psi > 0.0) ||
+        !isfinite(w->psi) || !(e->width > 0.0) || !isfinite(e->width) || !isfinite(e->center))
+        return false;
+    double half = (w->psi + w->s) * e->width;
+    return fabs(e->center) + half < FG_WM_SAMPLE_INDEX_LIMIT;
+}
 
 /* First and last sample the event touches (e in range). */
-void fg_wm_event_span(const fg_wm_event *e, long *first, long *last);
+static inline void fg_wm_event_span(const fg_wm_event *e, long *first, long *last)
+{
+    double half = (e->shape.psi + e->shape.s) * e->width;
+    *first = fg_wm_sample_at(e->center - half);
+    *last = fg_wm_sample_at(e->center + half);
+}
+
+/* Whether an event whose last sample is last ends before the block it
+ * would be added to, even the accumulator's state before it: then
+ * fg_wm_accum_add of it (in range) adds nothing and returns
+ * FG_WAVE_DONE. */
+static inline bool fg_wm_event_ended(long last)
+{
+    return last < -3;
+}
 
 /* Adds event e (positions relative to the block start) to the block's
  * accumulator. The cost is a few closed-form evaluations per breakpoint in
@@ -51,6 +87,11 @@ void fg_wm_event_span(const fg_wm_event *e, long *first, long *last);
  * FG_WAVE_NON_FINITE, adding nothing, when e is out of range or a value
  * it would add is not finite. */
 fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e);
+
+/* fg_wm_accum_add of an event in range but perhaps for its B (checked),
+ * whose span first .. last (fg_wm_event_span) is known: one wave placed
+ * once and added to several buses at several weights. */
+fg_wave_status fg_wm_accum_add_span(fg_accum *b, const fg_wm_event *e, long first, long last);
 
 
 #endif
