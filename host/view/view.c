@@ -183,10 +183,8 @@ static int view_scene(view *v)
     fgg_picture *pic = NULL;
     pthread_t sim, audio;
     int started = 0;
-    fg_engine_config cfg;
-    scene_engine_config(v->s, &cfg);
-    v->rate_hz = cfg.sample_rate_hz;
-    v->block_frames = cfg.max_block_frames = v->s->block_frames;
+    v->rate_hz = v->s->sample_rate_hz; /* a live device's, once open */
+    v->block_frames = v->s->block_frames;
     fgg_context_config cc = {.backend = v->opt.backend, .width = v->opt.size.width,
                              .height = v->opt.size.height, .title = "fulgur view"};
     fgg_picture_config pc;
@@ -224,8 +222,14 @@ static int view_scene(view *v)
     }
     if (view_open_live(v, &v->rate_hz, &rc, err, sizeof err) != 0)
         goto done;
-    rc = CLI_RUNTIME;
+    rc = CLI_USAGE;
+    if (scene_read_hrirs(v->s, v->opt.sofa, v->rate_hz, &v->hrirs, err, sizeof err) != 0)
+        goto done;
+    fg_engine_config cfg;
+    scene_engine_config(v->s, &cfg); /* with the HRIRs */
+    cfg.max_block_frames = v->block_frames;
     cfg.sample_rate_hz = v->rate_hz;
+    rc = CLI_RUNTIME;
     if (fg_engine_create(&cfg, &v->engine) != FG_OK) {
         snprintf(err, sizeof err, "cannot create the engine");
         goto done;
@@ -294,8 +298,9 @@ done:
     free(v->aero_ids);
     free(v->aero_done);
     free(v->source_ids);
-    free(v->planes[0]);
-    free(v->planes[1]);
+    sofa_hrirs_free(&v->hrirs);
+    for (uint32_t ch = 0; ch < SCENE_MAX_CHANNELS; ch++)
+        free(v->planes[ch]);
     view_overlay_destroy(v->overlay);
     view_timeline_deinit(v);
     fgg_picture_destroy(pic);
@@ -305,18 +310,26 @@ done:
     return rc;
 }
 
-/* The scene, which must have something to show: a discharge (the first
- * is the one space triggers), a fire or an aero object. */
-static int load_scene(const char *path, scene *s)
+/* The scene in the layout asked for, which must have something to show: a
+ * discharge (the first is the one space triggers), a fire or an aero
+ * object; ambisonics only where no live device plays (they open 1 or 2
+ * channels). */
+static int load_scene(const view_options *opt, scene *s)
 {
     char err[512];
+    const char *path = opt->scene_path;
     if (scene_load(path, s, err, sizeof err) != 0) {
         fprintf(stderr, "fulgur view: %s\n", err);
         return -1;
     }
-    if (s->layout != FG_LAYOUT_STEREO) {
-        fprintf(stderr, "fulgur view: %s: layout: fulgur view plays the stereo layout only "
-                        "(fulgur render writes the others)\n", path);
+    if (opt->layout.given)
+        scene_set_layout(s, opt->layout.layout);
+    bool live = audio_output_is_live(&opt->audio) &&
+                (opt->audio.kind != AUDIO_DRIVER_AUTO || opt->backend == FGG_BACKEND_WINDOW);
+    if (s->channels > 2 && live) {
+        fprintf(stderr, "fulgur view: %s: layout: ambisonics of order %u is %u channels and the "
+                        "live devices play 1 or 2: use --audio wav:FILE, raw:- or null\n",
+                path, (unsigned)s->ambisonic_order, (unsigned)s->channels);
         scene_deinit(s);
         return -1;
     }
@@ -336,7 +349,7 @@ int view_main(int argc, char **argv)
     if (parsed != OPTIONS_OK)
         return parsed == OPTIONS_HELP ? CLI_OK : CLI_USAGE;
     scene s;
-    if (load_scene(opt.scene_path, &s) != 0)
+    if (load_scene(&opt, &s) != 0)
         return CLI_USAGE;
     view *v = calloc(1, sizeof *v); /* large: the requests' state */
     if (!v) {

@@ -42,6 +42,7 @@
 #include "common/audio_driver.h"
 #include "common/live_audio.h"
 #include "common/options.h"
+#include "common/sofa_hrir.h"
 #include "fulgur/gpu.h"
 #include "scene/scene.h"
 #include "scene/scene_fire_render.h"
@@ -120,6 +121,8 @@ typedef struct view_options {
     option_size size;        /* 960 x 540 */
     const char *png_dir;     /* headless: frame_0000.png, ... */
     const char *script_path;
+    scene_layout_choice layout; /* over the scene's "layout" */
+    const char *sofa;        /* the binaural layout's HRIRs, over layout.sofa */
 } view_options;
 
 typedef struct view_camera {
@@ -182,7 +185,8 @@ typedef struct view {
     atomic_bool stop;
     audio_driver driver;
     live_audio *live;        /* window with a live device: its callback renders */
-    float *planes[2];
+    float *planes[SCENE_MAX_CHANNELS]; /* the layout's channels */
+    sofa_hrirs hrirs;        /* the binaural layout's, read at the view's rate */
     char audio_error[512];
     fg_result render_result;
     /* the durations of the last audio callbacks, microseconds, written by
