@@ -532,14 +532,7 @@ static int parse_args(int argc, char **argv, render_args *a)
         {"--manifest", OPTION_TEXT, &a->manifest, "FILE",
          .help = "a JSON line per file written: scene, seed, duration, peak,\n"
                  "calibration (- : stdout, the summary lines then to stderr)"},
-        {"--layout", OPTION_PARSED, &a->layout, "LAYOUT", .parse = scene_layout_option,
-         .help = "stereo, binaural (HRIRs of --sofa) or ambisonics:ORDER,\n"
-                 "ORDER 1..3 (AmbiX: ACN order, SN3D; 4, 9 or 16 channels);\n"
-                 "over the scene's \"layout\" (default stereo)"},
-        {"--sofa", OPTION_TEXT, &a->sofa, "FILE",
-         .help = "the SOFA file (AES69 SimpleFreeFieldHRIR) of the binaural\n"
-                 "layout, over the scene's layout.sofa (default\n"
-                 SOFA_DEFAULT_FILE ")"},
+        SCENE_LAYOUT_OPTIONS(&a->layout, &a->sofa, ""),
         {"--quiet", OPTION_FLAG, &a->quiet,
          .help = "no summary line, no progress line, no warning of clipping or\n"
                  "silence"},

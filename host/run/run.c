@@ -34,28 +34,18 @@ static int open_live(run_ctx *run, int *rc, char *err, size_t err_size)
     return 0;
 }
 
-/* Posts every aero object (each sounds from its own emit time), before
- * the threads start: the sim thread posts only discharges after this. */
-static int post_aero_objects(run_ctx *run, int *rc, char *err, size_t err_size)
+/* Posts every aero object and every fire (each sounds from its own emit
+ * time; a fire's ring filled as far as it takes, its sound made at the
+ * run's rate, which a device's may make other than the scene's) before
+ * the threads start: the sim thread then posts only discharges, and feeds
+ * and moves the fires. Returns 0, or -1 with a message and *rc: a full
+ * pool or queue or no memory is the run's (try --voices), the rest the
+ * scene's. */
+static int post_sources(run_ctx *run, int *rc, char *err, size_t err_size)
 {
     fg_result r = scene_aero_post_all(run->s, run->engine, run->aero_ids, err, err_size);
-    if (r == FG_OK)
-        return 0;
-    bool room = r == FG_ERR_POOL_FULL || r == FG_ERR_QUEUE_FULL;
-    if (room)
-        snprintf(err + strlen(err), err_size - strlen(err), " (try --voices)");
-    *rc = room ? CLI_RUNTIME : CLI_USAGE;
-    return -1;
-}
-
-/* Posts every fire (each sounds from its own emit time) with its ring
- * filled as far as it takes, before the threads start; the sim thread
- * feeds and moves them after this. A fire's sound at the run's rate (a
- * device's may not be the scene's) is made here. */
-static int post_fires(run_ctx *run, int *rc, char *err, size_t err_size)
-{
-    fg_result r = scene_fire_job_init(&run->fires, run->s, run->rate_hz, err, err_size);
-    if (r == FG_OK)
+    if (r == FG_OK && (r = scene_fire_job_init(&run->fires, run->s, run->rate_hz, err,
+                                               err_size)) == FG_OK)
         r = scene_fire_job_post_all(&run->fires, run->engine, err, err_size);
     if (r == FG_OK)
         return 0;
@@ -132,8 +122,7 @@ static int set_up(run_ctx *run, int *rc, char *err, size_t err_size)
         snprintf(err, err_size, "engine: %s", fg_result_str(r));
         return -1;
     }
-    return post_aero_objects(run, rc, err, err_size) == 0 ? post_fires(run, rc, err, err_size)
-                                                          : -1;
+    return post_sources(run, rc, err, err_size);
 }
 
 static void tear_down(run_ctx *run)

@@ -44,13 +44,7 @@ options_result run_parse_options(int argc, char **argv, run_options *o)
                  "together (default: 131072, or the explicit trees' total\n"
                  "when larger; generated trees are built during the run)",
          .range = {.lo = 1, .hi = RUN_MAX_SEGMENTS}},
-        {"--layout", OPTION_PARSED, &o->layout, "LAYOUT", .parse = scene_layout_option,
-         .help = "stereo, binaural (HRIRs of --sofa) or ambisonics:ORDER (1..3:\n"
-                 "AmbiX, 4, 9 or 16 channels: wav: and raw: only), over the\n"
-                 "scene's \"layout\" (default stereo)"},
-        {"--sofa", OPTION_TEXT, &o->sofa, "FILE",
-         .help = "the binaural layout's SOFA file, over the scene's\n"
-                 "layout.sofa (default " SOFA_DEFAULT_FILE ")"},
+        SCENE_LAYOUT_OPTIONS(&o->layout, &o->sofa, ": wav: and raw: only"),
         {"--frame-rate", OPTION_NUMBER, &o->frame_hz, "HZ",
          .help = "the frame thread's rate (default 90; at least 10: a head pose\n"
                  "older than 100 ms, and the last tick's wait, would hold the run)",

@@ -210,6 +210,18 @@ typedef struct scene_layout_choice {
  * scene_layout_choice; the text as scene_layout_from_text reads it. */
 int scene_layout_option(const char *text, void *value, char *why, size_t why_size);
 
+/* The hosts' --layout and --sofa entries of their option tables
+ * (common/options.h; SOFA_DEFAULT_FILE from common/sofa_hrir.h), over the
+ * scene's "layout"; where is what the host's ambisonics plays to. */
+#define SCENE_LAYOUT_OPTIONS(choice, sofa_path, where)                                        \
+    {"--layout", OPTION_PARSED, (choice), "LAYOUT", .parse = scene_layout_option,          \
+     .help = "stereo, binaural (HRIRs of --sofa) or ambisonics:ORDER (1..3:\n"              \
+             "AmbiX, 4, 9 or 16 channels" where "), over the scene's\n"                      \
+             "\"layout\" (default stereo)"},                                                 \
+    {"--sofa", OPTION_TEXT, (sofa_path), "FILE",                                            \
+     .help = "the SOFA file (AES69 SimpleFreeFieldHRIR) of the binaural\n"                  \
+             "layout, over the scene's layout.sofa (default\n" SOFA_DEFAULT_FILE ")"}
+
 /* Sets s's layout to l (a host's --layout overriding the scene's) with its
  * channels: (order + 1)^2 ambisonic, 2 binaural and stereo (the scene's
  * "layout" of type stereo keeps its "channels" instead). */

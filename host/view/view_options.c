@@ -47,13 +47,7 @@ options_result view_parse_options(int argc, char **argv, view_options *o)
          .parse = option_parse_size},
         {"--png-dir", OPTION_TEXT, &o->png_dir, "DIR",
          .help = "headless: write DIR/frame_0000.png, frame_0001.png, ..."},
-        {"--layout", OPTION_PARSED, &o->layout, "LAYOUT", .parse = scene_layout_option,
-         .help = "stereo, binaural (HRIRs of --sofa) or ambisonics:ORDER (1..3:\n"
-                 "4, 9 or 16 channels: not on a live device), over the scene's\n"
-                 "\"layout\" (default stereo)"},
-        {"--sofa", OPTION_TEXT, &o->sofa, "FILE",
-         .help = "the binaural layout's SOFA file, over the scene's\n"
-                 "layout.sofa (default " SOFA_DEFAULT_FILE ")"},
+        SCENE_LAYOUT_OPTIONS(&o->layout, &o->sofa, ": not on a live device"),
         {"--script", OPTION_TEXT, &o->script_path, "FILE",
          .help = "input events by frame: \"frame 3 key space\",\n"
                  "\"frame 5 click 0.4 0.5 left\", \"frame 6 key h\",\n"
