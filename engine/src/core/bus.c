@@ -24,10 +24,13 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
                           double c_m_s, double head_radius_m, const fg_air *air)
 {
     memset(s, 0, sizeof *s);
-    size_t planes = (size_t)FG_BUS_COUNT * channels;
+    /* no head (one ear, or a spacing of 0) sends nothing to the twins:
+     * they get no planes */
+    s->count = head_radius_m > 0 ? FG_BUS_COUNT : FG_BUS_PLAIN;
+    size_t planes = (size_t)s->count * channels;
     s->d3 = calloc(planes * max_frames, sizeof *s->d3);
     s->pre = calloc(planes * max_frames, sizeof *s->pre);
-    s->fir = calloc(2 * (size_t)channels, sizeof *s->fir);
+    s->fir = calloc((size_t)(s->count / FG_BUS_PLAIN) * channels, sizeof *s->fir);
     if (!s->d3 || !s->pre || !s->fir) {
         fg_bus_set_deinit(s);
         return FG_ERR_NO_MEMORY;
@@ -37,13 +40,12 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     s->fs_hz = fs_hz;
     s->air = *air;
     fg_result r = fg_band_plan_init(&s->plan, BAND_NEAR_M, BAND_FAR_M, FG_ABSORPTION_BANDS);
-    for (unsigned i = 0; i < 2 * channels && r == FG_OK; i++)
+    for (unsigned i = 0; i < (s->count / FG_BUS_PLAIN) * channels && r == FG_OK; i++)
         r = fg_abe_fir_init(&s->fir[i], fs_hz);
     if (r != FG_OK) {
         fg_bus_set_deinit(s);
         return r;
     }
-    /* no head (one ear, or a spacing of 0) sends nothing to the twins */
     fg_biquad hp = fg_head_highpass(head_radius_m > 0 ? head_radius_m : 1.0, fs_hz, c_m_s);
     for (unsigned b = 0; b < FG_BUS_PLAIN; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
@@ -51,7 +53,7 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
             fg_iir_reset(&s->shadow[b][ch]);
         }
     }
-    for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
+    for (unsigned b = 0; b < s->count; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
             size_t plane = (size_t)b * channels + ch;
             fg_accum_begin(&s->bus[b].accum[ch], s->d3 + plane * max_frames, max_frames);
@@ -94,7 +96,7 @@ unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m, double *w_next)
 
 void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
 {
-    for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
+    for (unsigned b = 0; b < s->count; b++) {
         for (unsigned ch = 0; ch < s->channels; ch++) {
             fg_bus *bus = &s->bus[b];
             fg_accum_restart(&bus->accum[ch], n);
@@ -147,7 +149,7 @@ static bool all_finite(const float *x, uint32_t n)
 uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
 {
     uint64_t dropped = 0;
-    for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
+    for (unsigned b = 0; b < s->count; b++) {
         for (unsigned ch = 0; ch < s->channels; ch++) {
             fg_bus *bus = &s->bus[b];
             if (b == FG_BUS_DRY && !bus->pre_used[ch]) {
