@@ -28,6 +28,12 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
      * they get no planes */
     s->count = head_radius_m > 0 ? FG_BUS_COUNT : FG_BUS_PLAIN;
     size_t planes = (size_t)s->count * channels;
+    /* the longest power of two whose planes fit FG_BUS_PLANE_BYTES */
+    const size_t fit = FG_BUS_PLANE_BYTES / (planes * (sizeof *s->d3 + sizeof *s->pre));
+    uint32_t frames = 1;
+    while (frames < max_frames && 2 * (size_t)frames <= fit)
+        frames *= 2;
+    max_frames = frames < max_frames ? frames : max_frames;
     s->d3 = calloc(planes * max_frames, sizeof *s->d3);
     s->pre = calloc(planes * max_frames, sizeof *s->pre);
     s->fir = calloc((size_t)(s->count / FG_BUS_PLAIN) * channels, sizeof *s->fir);

@@ -35,6 +35,13 @@ enum {
  * (spatial/binaural_internal.h; a third-order ambisonic layout has 16). */
 #define FG_BUS_MAX_CHANNELS 50
 
+/* The most bytes the planes (a double and a float per frame, bus and
+ * channel) take: a longer max_frames is cut to the longest power of two
+ * that fits (stereo with the twins keeps 4096 frames, third-order
+ * ambisonics 1024, binaural 512), and the engine renders a longer call as
+ * blocks of that length (core/render.c). */
+#define FG_BUS_PLANE_BYTES (16u << 20)
+
 typedef struct fg_bus {
     fg_accum accum[FG_BUS_MAX_CHANNELS]; /* difference-domain input (the WM-waves), per channel */
     float *pre[FG_BUS_MAX_CHANNELS];     /* the channel's signal before the filters */
@@ -48,7 +55,8 @@ typedef struct fg_bus_set {
     unsigned count;      /* buses with planes: FG_BUS_COUNT with a head, else
                           * FG_BUS_PLAIN (no twins) */
     unsigned channels;
-    uint32_t max_frames;
+    uint32_t max_frames; /* the longest block: the max_frames asked, or fewer to fit
+                          * FG_BUS_PLANE_BYTES */
     double *d3;          /* count * channels * max_frames */
     float *pre;          /* the same count of floats */
     /* filters: shared coefficients, state per ear */
@@ -63,9 +71,9 @@ typedef struct fg_bus_set {
     double fs_hz;
 } fg_bus_set;
 
-/* Allocates the buses for max_frames-frame blocks, with the twins and
- * their filter for a head of radius head_radius_m (0: none, no twins).
- * [main-thread] */
+/* Allocates the buses for blocks of max_frames frames or of fewer, to fit
+ * FG_BUS_PLANE_BYTES (s->max_frames says), with the twins and their filter
+ * for a head of radius head_radius_m (0: none, no twins). [main-thread] */
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
                           double c_m_s, double head_radius_m, const fg_air *air);
 void fg_bus_set_deinit(fg_bus_set *s);
