@@ -255,7 +255,9 @@ static void render_long_segment(uint32_t max_block, uint32_t call, float *left, 
  * of 4096 frames is rendered as eight blocks of 512, the same samples as
  * eight calls; the sound does not depend on the block: a segment whose
  * waves span many blocks has the same energy in blocks of 64 and 512
- * frames. */
+ * frames; and a wave is heard to its end (its status once came from
+ * loudspeaker 0, which mostly has gain 0: a wave was dropped after the
+ * first block it reached, a segment's second pulse lost). */
 static void long_calls_are_blocks(void **state)
 {
     (void)state;
@@ -285,6 +287,21 @@ static void long_calls_are_blocks(void **state)
                   e64 / e512);
     assert_true(e512 > 0.0);
     assert_true(fabs(e64 / e512 - 1.0) < 1e-4);
+    /* both ends of the segment are heard: a WM-wave's two pulses, as far
+     * apart as the ends' distances from the head (it is at the origin) */
+    double ends[2];
+    for (int k = 0; k < 2; k++) {
+        double sgn = k ? 1.0 : -1.0, u = 5.0 / sqrt(1.09);
+        double p[3] = {-20 + sgn * u, 20, 3 + sgn * 0.3 * u};
+        ends[k] = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    }
+    double want = fabs(ends[0] - ends[1]) / 343.0 * FS;
+    size_t at[4];
+    size_t found = fx_onsets(l64, N, 0.05f * fx_peak(l64, N), 240, at, 4);
+    print_message("pulses: %zu, %zu frames apart (the ends: %.0f)\n", found,
+                  found == 2 ? at[1] - at[0] : 0, want);
+    assert_int_equal(found, 2);
+    assert_true(fabs((double)(at[1] - at[0]) - want) < 48.0);
 }
 
 /* Writes n bytes of data to dir/name; returns the path (static). */
