@@ -23,18 +23,19 @@ bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_so
                                  const fg_propagation_config *prop, fg_voice_model model,
                                  const fg_listener *listener, unsigned block)
 {
-    return bench_render_tree_layout(nodes, count, params, prop, model, FG_LAYOUT_STEREO, 0,
+    return bench_render_tree_layout(nodes, count, params, prop, model, FG_LAYOUT_STEREO, 0, NULL,
                                     listener, block);
 }
 
 bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
                                    const fg_sound_config *params, const fg_propagation_config *prop,
                                    fg_voice_model model, fg_layout layout, uint32_t order,
-                                   const fg_listener *listener, unsigned block)
+                                   const fg_hrir_set *hrirs, const fg_listener *listener,
+                                   unsigned block)
 {
     fg_engine_config cfg = {.sample_rate_hz = 48000, .max_block_frames = block,
                             .segment_capacity = (uint32_t)(2 * count), .max_voices = 1,
-                            .layout = layout, .ambisonic_order = order};
+                            .layout = layout, .ambisonic_order = order, .hrirs = hrirs};
     fg_engine *e;
     check(fg_engine_create(&cfg, &e), "create");
     check(fg_engine_set_listener(e, listener), "listener");
@@ -47,7 +48,7 @@ bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
     bench_run run = {0};
     double t0 = bench_now_s();
     check(fg_engine_post(e, &d, NULL), "post");
-    double t1 = bench_now_s();
+    double t1 = bench_now_s(), c1 = bench_cpu_s();
     fg_engine_report st = {0};
     uint64_t frames = 0;
     while (st.finished == 0) {
@@ -55,9 +56,10 @@ bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
         frames += block;
         fg_engine_get_report(e, &st);
     }
-    double t2 = bench_now_s();
+    double t2 = bench_now_s(), c2 = bench_cpu_s();
     run.post_s = t1 - t0;
     run.render_s = t2 - t1;
+    run.render_cpu_s = c2 - c1;
     run.sound_s = (double)frames / 48000.0;
     for (uint32_t ch = 0; ch < cfg.channels; ch++)
         free(planes[ch]);

@@ -10,6 +10,7 @@
 typedef struct bench_run {
     double post_s;     /* fg_engine_post: preparation and the arrival sort */
     double render_s;   /* every fg_engine_render call until the voice ended */
+    double render_cpu_s; /* the same, CPU time of this thread */
     double sound_s;    /* length of the sound produced */
 } bench_run;
 
@@ -23,10 +24,12 @@ bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_so
                                  const fg_propagation_config *prop, fg_voice_model model,
                                  const fg_listener *listener, unsigned block);
 
-/* The same in an output layout (fg_engine_config.layout, ambisonic_order). */
+/* The same in an output layout (fg_engine_config.layout, ambisonic_order,
+ * hrirs: NULL but for binaural). */
 bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
                                    const fg_sound_config *params, const fg_propagation_config *prop,
                                    fg_voice_model model, fg_layout layout, uint32_t order,
-                                   const fg_listener *listener, unsigned block);
+                                   const fg_hrir_set *hrirs, const fg_listener *listener,
+                                   unsigned block);
 
 #endif
