@@ -23,18 +23,19 @@ bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_so
                                  const fg_propagation_config *prop, fg_voice_model model,
                                  const fg_listener *listener, unsigned block)
 {
-    return bench_render_tree_layout(nodes, count, params, prop, model, FG_LAYOUT_STEREO, 0,
+    return bench_render_tree_layout(nodes, count, params, prop, model, FG_LAYOUT_STEREO, 0, NULL,
                                     listener, block);
 }
 
 bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
                                    const fg_sound_config *params, const fg_propagation_config *prop,
                                    fg_voice_model model, fg_layout layout, uint32_t order,
-                                   const fg_listener *listener, unsigned block)
+                                   const fg_hrir_set *hrirs, const fg_listener *listener,
+                                   unsigned block)
 {
     fg_engine_config cfg = {.sample_rate_hz = 48000, .max_block_frames = block,
                             .segment_capacity = (uint32_t)(2 * count), .max_voices = 1,
-                            .layout = layout, .ambisonic_order = order};
+                            .layout = layout, .ambisonic_order = order, .hrirs = hrirs};
     fg_engine *e;
     check(fg_engine_create(&cfg, &e), "create");
     check(fg_engine_set_listener(e, listener), "listener");

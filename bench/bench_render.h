@@ -25,10 +25,12 @@ bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_so
                                  const fg_propagation_config *prop, fg_voice_model model,
                                  const fg_listener *listener, unsigned block);
 
-/* The same in an output layout (fg_engine_config.layout, ambisonic_order). */
+/* The same in an output layout (fg_engine_config.layout, ambisonic_order,
+ * hrirs: NULL but for binaural). */
 bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
                                    const fg_sound_config *params, const fg_propagation_config *prop,
                                    fg_voice_model model, fg_layout layout, uint32_t order,
-                                   const fg_listener *listener, unsigned block);
+                                   const fg_hrir_set *hrirs, const fg_listener *listener,
+                                   unsigned block);
 
 #endif

@@ -3,7 +3,13 @@
  * number of concurrent bolts before the 99th percentile passes half the
  * block's budget, and the worst block: a thunderclap whose every segment
  * arrives at once (thread CPU time). Writes bench/results/callback.csv,
- * stress.csv and worst_block.csv. */
+ * stress.csv and worst_block.csv (`bench_callback worst`: only that one);
+ * and callback_layouts.csv: the issue 15 load (10 bolts and 100 sparks/s
+ * in 128-frame blocks) in every output layout, binaural through the MIT
+ * KEMAR set that Debian's libmysofa1 installs, each callback timed in the
+ * thread's CPU time, the median of three runs' p50 and p99 against the
+ * goals (binaural p99 <= 15 % of the budget, third-order ambisonics <=
+ * 20 %) (`bench_callback layouts`: only that file). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,6 +17,7 @@
 
 #include "bench_util.h"
 #include "fulgur/fulgur.h"
+#include "sofa_hrir.h"
 #include "synth_tree.h"
 
 #define FS 48000.0
@@ -27,6 +34,10 @@ typedef struct load {
     int bolts;
     int sparks;   /* non-zero: the 100/s spark stream */
     unsigned block;
+    fg_layout layout;          /* 0: stereo */
+    uint32_t order;            /* ambisonics */
+    const fg_hrir_set *hrirs;  /* binaural */
+    double (*clock)(void);     /* NULL: bench_now_s (wall); bench_cpu_s */
 } load;
 
 typedef struct timing {
@@ -60,11 +71,15 @@ static timing run(const load *L, fg_node *tree)
 {
     fg_engine_config cfg = {.sample_rate_hz = FS, .max_block_frames = L->block,
                             .max_voices = (uint32_t)L->bolts + 64,
-                            .segment_capacity = (uint32_t)(L->bolts * BOLT_SEGMENTS + 64 * SPARK_SEGMENTS)};
+                            .segment_capacity = (uint32_t)(L->bolts * BOLT_SEGMENTS + 64 * SPARK_SEGMENTS),
+                            .layout = L->layout, .ambisonic_order = L->order,
+                            .hrirs = L->hrirs};
+    double (*clock)(void) = L->clock ? L->clock : bench_now_s;
     fg_engine *e;
     fg_result r = fg_engine_create(&cfg, &e);
     if (r != FG_OK)
         die("create", r);
+    fg_engine_get_config(e, &cfg);
     fg_listener head = {.position = {0, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
     if ((r = fg_engine_set_listener(e, &head)) != FG_OK)
         die("listener", r);
@@ -79,7 +94,9 @@ static timing run(const load *L, fg_node *tree)
         if ((r = fg_engine_post(e, &d, NULL)) != FG_OK)
             die("post bolt", r);
     }
-    float *planes[2] = {malloc(L->block * sizeof(float)), malloc(L->block * sizeof(float))};
+    float *planes[16];
+    for (uint32_t ch = 0; ch < cfg.channels; ch++)
+        planes[ch] = malloc(L->block * sizeof(float));
     size_t cap = (size_t)((WINDOW_END_S - WINDOW_START_S) * FS / L->block) + 2, n = 0;
     double *us = malloc(cap * sizeof *us);
     int next_spark = 0;
@@ -93,10 +110,10 @@ static timing run(const load *L, fg_node *tree)
                 die("post spark", r);
             next_spark++;
         }
-        double t0 = bench_now_s();
+        double t0 = clock();
         if ((r = fg_engine_render(e, planes, L->block)) != FG_OK)
             die("render", r);
-        double dt = bench_now_s() - t0;
+        double dt = clock() - t0;
         if (t >= WINDOW_START_S && n < cap)
             us[n++] = 1e6 * dt;
         fg_engine_collect(e);
@@ -107,10 +124,75 @@ static timing run(const load *L, fg_node *tree)
                   .max = bench_quantile(us, n, 1.0), .budget_us = 1e6 * L->block / FS,
                   .blocks = n, .late_events = st.late_events};
     free(us);
-    free(planes[0]);
-    free(planes[1]);
+    for (uint32_t ch = 0; ch < cfg.channels; ch++)
+        free(planes[ch]);
     fg_engine_destroy(e);
     return out;
+}
+
+/* callback_layouts.csv: the issue 15 load in every layout. */
+static void layouts(const char *cpu, fg_node *tree)
+{
+    typedef struct {
+        const char *name;
+        fg_layout layout;
+        uint32_t order;
+        double goal; /* p99 / budget, 0: none */
+    } layout_case;
+    static const layout_case cases[] = {
+        {"stereo", FG_LAYOUT_STEREO, 0, 0.0},
+        {"ambisonics order 1", FG_LAYOUT_AMBISONICS, 1, 0.0},
+        {"ambisonics order 2", FG_LAYOUT_AMBISONICS, 2, 0.0},
+        {"ambisonics order 3", FG_LAYOUT_AMBISONICS, 3, 0.20},
+        {"binaural", FG_LAYOUT_BINAURAL, 0, 0.15},
+    };
+    enum { CASES = sizeof cases / sizeof cases[0], RUNS = 3 };
+    sofa_hrirs kemar;
+    char err[512];
+    if (sofa_hrirs_read(SOFA_DEFAULT_FILE, FS, &kemar, err, sizeof err) != 0) {
+        fprintf(stderr, "bench_callback: %s\n", err);
+        exit(1);
+    }
+    static double p50[CASES][RUNS], p99[CASES][RUNS];
+    double budget_us = 0;
+    for (int k = 0; k < RUNS; k++) {
+        for (int c = 0; c < CASES; c++) {
+            load L = {.bolts = 10, .sparks = 1, .block = 128, .layout = cases[c].layout,
+                      .order = cases[c].order,
+                      .hrirs = cases[c].layout == FG_LAYOUT_BINAURAL ? &kemar.set : NULL,
+                      .clock = bench_cpu_s};
+            timing t = run(&L, tree);
+            p50[c][k] = t.p50;
+            p99[c][k] = t.p99;
+            budget_us = t.budget_us;
+        }
+    }
+    FILE *csv = bench_open_result("callback_layouts.csv");
+    fprintf(csv, "# %s; 48 kHz, 128-frame blocks, 10 %d-segment bolts at 2-3 km and 100 "
+                 "sparks/s, callbacks over %.0f-%.0f s in the thread's CPU time, median of %d "
+                 "runs; binaural through %s\n",
+            cpu, BOLT_SEGMENTS, WINDOW_START_S, WINDOW_END_S, RUNS, SOFA_DEFAULT_FILE);
+    fprintf(csv, "layout,p50_us,p99_us,budget_us,p99_of_budget,goal,ratio_p50_to_stereo,"
+                 "ratio_p99_to_stereo\n");
+    double base50 = 0, base99 = 0;
+    for (int c = 0; c < CASES; c++) {
+        double m50 = bench_median(p50[c], RUNS), m99 = bench_median(p99[c], RUNS);
+        if (c == 0) {
+            base50 = m50;
+            base99 = m99;
+        }
+        char goal[32] = "";
+        if (cases[c].goal > 0)
+            snprintf(goal, sizeof goal, "%.2f", cases[c].goal);
+        fprintf(csv, "%s,%.2f,%.2f,%.1f,%.4f,%s,%.2f,%.2f\n", cases[c].name, m50, m99, budget_us,
+                m99 / budget_us, goal, m50 / base50, m99 / base99);
+        printf("%-20s p50 %7.1f us, p99 %7.1f us = %5.1f %% of %.0f us%s%s; x%.2f / x%.2f "
+               "stereo\n",
+               cases[c].name, m50, m99, 100 * m99 / budget_us, budget_us,
+               cases[c].goal > 0 ? ", goal " : "", goal, m50 / base50, m99 / base99);
+    }
+    fclose(csv);
+    sofa_hrirs_free(&kemar);
 }
 
 /* All segments of an arc centred on the listener arrive in one block: the
@@ -203,7 +285,8 @@ static void worst_blocks(const char *cpu, fg_node *tree)
 /* usage: bench_callback [MAX_STRESS | worst]; worst: worst_block.csv alone */
 int main(int argc, char **argv)
 {
-    int max_stress = argc > 1 ? atoi(argv[1]) : 400;
+    int only_layouts = argc > 1 && strcmp(argv[1], "layouts") == 0;
+    int max_stress = argc > 1 && !only_layouts ? atoi(argv[1]) : 400;
     char cpu[256];
     bench_machine(cpu, sizeof cpu);
     fg_node *tree = malloc((BOLT_SEGMENTS + 1) * sizeof *tree);
@@ -211,6 +294,11 @@ int main(int argc, char **argv)
         return 1;
     if (argc > 1 && strcmp(argv[1], "worst") == 0) {
         worst_blocks(cpu, tree);
+        free(tree);
+        return 0;
+    }
+    layouts(cpu, tree);
+    if (only_layouts) {
         free(tree);
         return 0;
     }

@@ -3,7 +3,7 @@
 # and plot. Sourced by demo.sh and test.sh; set FULGUR_DEPS_EXTRA to add more.
 # Run on its own (bash scripts/deps.sh), it installs them.
 fulgur_install_deps() {
-  local pkgs=(cmake make gcc g++ pkg-config libcjson-dev libsndfile1-dev libsamplerate0-dev libmysofa-dev libfftw3-dev
+  local pkgs=(cmake make gcc g++ pkg-config libcjson-dev libsndfile1-dev libsamplerate0-dev libmysofa-dev netcdf-bin libfftw3-dev
               libpng-dev zlib1g-dev gnuplot-nox libcmocka-dev clang-14 libfuzzer-14-dev
               libclang-rt-14-dev lv2-dev liblilv-dev sordi lilv-utils jalv
               libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev

@@ -30,6 +30,7 @@
 #include "ear_measure.h"
 #include "engine_fixture.h"
 #include "fulgur/fulgur.h"
+#include "core/engine_internal.h"
 #include "spatial/binaural_internal.h"
 
 #define FS 48000.0
@@ -229,6 +230,80 @@ static void engine_refuses_bad_hrirs(void **state)
     fg_engine_destroy(e);
 }
 
+/* A 10 m segment 30 m from the head, ahead and to the left, rendered
+ * binaurally in calls of `call` frames by an engine for max_block frames
+ * (its waves last about 30 ms: they span many blocks). */
+static void render_long_segment(uint32_t max_block, uint32_t call, float *left, float *right,
+                                size_t frames)
+{
+    fg_engine_config cfg = {.sample_rate_hz = FS, .max_block_frames = max_block,
+                            .layout = FG_LAYOUT_BINAURAL, .hrirs = &kemar.set};
+    fg_engine *e;
+    assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
+    fg_node nodes[2];
+    fx_segment(nodes, (double[]){-20, 20, 3}, (double[]){1, 0, 0.3}, 5.0);
+    fg_discharge d = {.nodes = nodes, .node_count = 2, .strokes = 1, .seed = 5};
+    assert_int_equal(fg_preset_sound(FG_PRESET_SPARK_BALLS, &d.sound), FG_OK);
+    d.sound.t0_jitter = 0;
+    assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
+    fx_render(e, (float *[]){left, right}, 2, frames, call);
+    fg_engine_destroy(e);
+}
+
+/* Memory bounded whatever max_block_frames: a binaural engine for 4096
+ * frames keeps bus planes of 512 frames (FG_BUS_PLANE_BYTES), and a call
+ * of 4096 frames is rendered as eight blocks of 512, the same samples as
+ * eight calls; the sound does not depend on the block: a segment whose
+ * waves span many blocks has the same energy in blocks of 64 and 512
+ * frames; and a wave is heard to its end (its status once came from
+ * loudspeaker 0, which mostly has gain 0: a wave was dropped after the
+ * first block it reached, a segment's second pulse lost). */
+static void long_calls_are_blocks(void **state)
+{
+    (void)state;
+    enum { N = 4 * 4096 };
+    static float l1[N], r1[N], l8[N], r8[N], l64[N], r64[N];
+    fg_engine_config cfg = {.sample_rate_hz = FS, .max_block_frames = 4096,
+                            .layout = FG_LAYOUT_BINAURAL, .hrirs = &kemar.set};
+    fg_engine *e;
+    assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
+    assert_int_equal(e->buses.max_frames, 512);
+    assert_int_equal(e->buses.count, FG_BUS_PLAIN); /* no head, no twins */
+    fg_engine_destroy(e);
+    cfg.layout = FG_LAYOUT_STEREO;
+    cfg.hrirs = NULL;
+    assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
+    assert_int_equal(e->buses.max_frames, 4096);
+    fg_engine_destroy(e);
+
+    render_long_segment(4096, 4096, l1, r1, N);
+    render_long_segment(4096, 512, l8, r8, N);
+    assert_memory_equal(l1, l8, sizeof l1);
+    assert_memory_equal(r1, r8, sizeof r1);
+    render_long_segment(64, 64, l64, r64, N);
+    double e512 = fx_energy(l8, 0, N) + fx_energy(r8, 0, N);
+    double e64 = fx_energy(l64, 0, N) + fx_energy(r64, 0, N);
+    print_message("energy in blocks of 512: %.6g, of 64: %.6g (ratio %.6f)\n", e512, e64,
+                  e64 / e512);
+    assert_true(e512 > 0.0);
+    assert_true(fabs(e64 / e512 - 1.0) < 1e-4);
+    /* both ends of the segment are heard: a WM-wave's two pulses, as far
+     * apart as the ends' distances from the head (it is at the origin) */
+    double ends[2];
+    for (int k = 0; k < 2; k++) {
+        double sgn = k ? 1.0 : -1.0, u = 5.0 / sqrt(1.09);
+        double p[3] = {-20 + sgn * u, 20, 3 + sgn * 0.3 * u};
+        ends[k] = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    }
+    double want = fabs(ends[0] - ends[1]) / 343.0 * FS;
+    size_t at[4];
+    size_t found = fx_onsets(l64, N, 0.05f * fx_peak(l64, N), 240, at, 4);
+    print_message("pulses: %zu, %zu frames apart (the ends: %.0f)\n", found,
+                  found == 2 ? at[1] - at[0] : 0, want);
+    assert_int_equal(found, 2);
+    assert_true(fabs((double)(at[1] - at[0]) - want) < 48.0);
+}
+
 /* Writes n bytes of data to dir/name; returns the path (static). */
 static const char *write_file(const char *dir, const char *name, const void *data, size_t n)
 {
@@ -303,6 +378,7 @@ int main(void)
         cmocka_unit_test(kemar_itd_and_ild),
         cmocka_unit_test(panning_gains),
         cmocka_unit_test(engine_refuses_bad_hrirs),
+        cmocka_unit_test(long_calls_are_blocks),
         cmocka_unit_test(reader_refuses_bad_files),
     };
     return cmocka_run_group_tests(tests, load_kemar, free_kemar);

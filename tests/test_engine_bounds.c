@@ -236,7 +236,7 @@ static bool nan_render(void *voice, bool stopping, const fg_block_context *block
 {
     (void)stopping;
     nan_voice *v = voice;
-    for (unsigned b = FG_BUS_FIR; b < FG_BUS_COUNT; b += FG_BUS_PLAIN)
+    for (unsigned b = FG_BUS_FIR; b < block->buses->count; b += FG_BUS_PLAIN)
         for (unsigned ch = 0; ch < block->ears->count; ch++)
             fg_bus_pre(block->buses, b, ch)[7] = NAN;
     return --v->blocks_left == 0;

@@ -62,22 +62,59 @@ static float *convert(const float *in, size_t n, double ratio, size_t out_n, cha
     return out;
 }
 
+/* The dimensions the engine needs, each named when wrong: 0, or -1 with
+ * why. Run before libmysofa's own check too, whose answer for a wrong
+ * dimension names none. */
+static int check_dimensions(const struct MYSOFA_HRTF *hrtf, char *why, size_t why_size)
+{
+    const unsigned m = hrtf->M, r = hrtf->R, n = hrtf->N;
+    if (r != 2) {
+        snprintf(why, why_size, "%u receivers (dimension R): expected 2 (left and right ear)", r);
+        return -1;
+    }
+    if (m < 16 || m > FG_HRIR_MAX_COUNT) {
+        snprintf(why, why_size, "%u measurements (dimension M): expected 16 to %u", m,
+                 FG_HRIR_MAX_COUNT);
+        return -1;
+    }
+    if (n == 0) {
+        snprintf(why, why_size, "Data.IR has no taps (dimension N is 0)");
+        return -1;
+    }
+    if ((size_t)hrtf->DataIR.elements != (size_t)m * r * n) {
+        snprintf(why, why_size, "Data.IR holds %u values: expected M x R x N = %u x %u x %u",
+                 hrtf->DataIR.elements, m, r, n);
+        return -1;
+    }
+    if ((size_t)hrtf->SourcePosition.elements != (size_t)m * 3) {
+        snprintf(why, why_size, "SourcePosition holds %u values: expected M x 3 = %u",
+                 hrtf->SourcePosition.elements, m * 3);
+        return -1;
+    }
+    if (hrtf->DataSamplingRate.elements < 1) {
+        snprintf(why, why_size, "Data.SamplingRate is empty");
+        return -1;
+    }
+    for (unsigned k = 1; k < hrtf->DataSamplingRate.elements; k++) {
+        if (hrtf->DataSamplingRate.values[k] != hrtf->DataSamplingRate.values[0]) {
+            snprintf(why, why_size, "Data.SamplingRate holds %g and %g Hz: expected one rate",
+                     hrtf->DataSamplingRate.values[0], hrtf->DataSamplingRate.values[k]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* Fills *out from the loaded, checked, cartesian hrtf; 0 or -1 with why. */
 static int take(struct MYSOFA_HRTF *hrtf, double rate_hz, sofa_hrirs *out, char *why,
                 size_t why_size)
 {
+    if (check_dimensions(hrtf, why, why_size) != 0)
+        return -1;
     const unsigned m = hrtf->M, r = hrtf->R, n = hrtf->N;
-    if (r != 2) {
-        snprintf(why, why_size, "%u receivers: expected 2 (left and right ear)", r);
-        return -1;
-    }
-    if (m < 16 || m > FG_HRIR_MAX_COUNT) {
-        snprintf(why, why_size, "%u measurements: expected 16 to %u", m, FG_HRIR_MAX_COUNT);
-        return -1;
-    }
-    if (n == 0 || hrtf->DataIR.elements != (unsigned)m * r * n ||
-        hrtf->SourcePosition.elements != (unsigned)m * 3 || hrtf->DataSamplingRate.elements < 1) {
-        snprintf(why, why_size, "Data.IR, SourcePosition or Data.SamplingRate of the wrong size");
+    const char *units = mysofa_getAttribute(hrtf->DataSamplingRate.attributes, "Units");
+    if (units && strcmp(units, "hertz") != 0) {
+        snprintf(why, why_size, "Data.SamplingRate in \"%s\": expected \"hertz\"", units);
         return -1;
     }
     for (unsigned k = 0; k < hrtf->DataDelay.elements; k++) {
@@ -94,8 +131,8 @@ static int take(struct MYSOFA_HRTF *hrtf, double rate_hz, sofa_hrirs *out, char 
     double ratio = rate_hz / file_rate;
     size_t taps = (size_t)ceil(n * ratio);
     if (taps == 0 || taps > FG_HRIR_MAX_LENGTH) {
-        snprintf(why, why_size, "%zu taps at %g Hz: expected 1 to %u", taps, rate_hz,
-                 FG_HRIR_MAX_LENGTH);
+        snprintf(why, why_size, "Data.IR of %u taps (dimension N) at %g Hz is %zu taps at %g Hz: "
+                 "expected 1 to %u", n, file_rate, taps, rate_hz, FG_HRIR_MAX_LENGTH);
         return -1;
     }
     for (unsigned k = 0; k < hrtf->DataIR.elements; k++) {
@@ -156,6 +193,14 @@ int sofa_hrirs_read(const char *path, double rate_hz, sofa_hrirs *out, char *err
         return -1;
     }
     code = mysofa_check(hrtf);
+    char why[160] = "";
+    if ((code == MYSOFA_INVALID_DIMENSIONS ||
+         code == MYSOFA_ONLY_THE_SAME_SAMPLING_RATE_SUPPORTED) &&
+        check_dimensions(hrtf, why, sizeof why) != 0) {
+        snprintf(err, err_size, "%s: %s", path, why);
+        mysofa_free(hrtf);
+        return -1;
+    }
     if (code != MYSOFA_OK) {
         snprintf(err, err_size, "%s: not a SOFA SimpleFreeFieldHRIR set (%s)", path,
                  mysofa_reason(code));
@@ -163,7 +208,6 @@ int sofa_hrirs_read(const char *path, double rate_hz, sofa_hrirs *out, char *err
         return -1;
     }
     mysofa_tocartesian(hrtf);
-    char why[160] = "";
     int rc = take(hrtf, rate_hz, out, why, sizeof why);
     mysofa_free(hrtf);
     if (rc != 0) {

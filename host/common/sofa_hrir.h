@@ -27,9 +27,11 @@ typedef struct sofa_hrirs {
 /* Reads path's responses at rate_hz into *out. Returns 0, or -1 with a
  * message naming path and what is wrong in err: missing or unreadable, not
  * a SOFA file, not a valid SimpleFreeFieldHRIR set (libmysofa's check),
- * not two receivers (ears), fewer than 16 measurements, no taps or more
- * than FG_HRIR_MAX_LENGTH at rate_hz, per-measurement delays (Data.Delay
- * other than 0), a non-finite tap, a failed conversion. On error *out is
+ * not two receivers (ears, dimension R), fewer than 16 measurements (M),
+ * no taps (N) or more than FG_HRIR_MAX_LENGTH at rate_hz, Data.IR or
+ * SourcePosition not of M x R x N and M x 3 values, Data.SamplingRate out
+ * of 1 to 384 kHz, holding two rates or not in hertz, per-measurement
+ * delays (Data.Delay other than 0), a non-finite tap, a failed conversion. On error *out is
  * zeroed and nothing is held. */
 int sofa_hrirs_read(const char *path, double rate_hz, sofa_hrirs *out, char *err,
                     size_t err_size);

@@ -298,6 +298,11 @@ FG_API size_t fg_engine_collect(fg_engine *engine);
  * at most 64 emissions (strokes, repeats) of a voice sound at once, and a voice
  * whose sound turns non-finite (a pose far out of its model's range) is
  * retired before it reaches a bus; the output is always finite.
+ * Long calls: the buses' planes are bounded (16 MiB: blocks of up to 4096
+ * frames in stereo, 2048 for ambisonics of order 2, 1024 of order 3, 512
+ * in binaural); a call of more frames is rendered as consecutive blocks of
+ * that length, each adopting up to max_adopt_per_block voices and spending
+ * its own work bound (peak_block_work is of those blocks).
  * [audio-thread] Wait-free; never allocates, locks or prints.
  * Errors: FG_ERR_NULL engine/out/a plane; FG_ERR_BLOCK_SIZE nframes >
  * max_block_frames (the planes are then filled with zeros if out is valid). */

@@ -30,6 +30,14 @@ void fg_iir_reset(fg_iir *f);
  * the floating-point environment. */
 void fg_iir_process(fg_iir *f, float *buf, size_t n);
 
+/* Filters up to FG_IIR_LANES signals at once, f[j] on buf[j][0..n) for j
+ * < count, every filter with the same number of sections: each lane gives
+ * exactly what fg_iir_process gives it (the same operations in the same
+ * order), but the lanes' recurrences run side by side instead of one
+ * after the other, which hides the latency of each. [audio-thread] */
+#define FG_IIR_LANES 4
+void fg_iir_process_lanes(fg_iir *const *f, float *const *buf, unsigned count, size_t n);
+
 /* e^{-jw} and e^{-2jw}, for evaluating many responses at one frequency. */
 typedef struct fg_phasor {
     double c1, s1, c2, s2;

@@ -24,10 +24,19 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
                           double c_m_s, double head_radius_m, const fg_air *air)
 {
     memset(s, 0, sizeof *s);
-    size_t planes = (size_t)FG_BUS_COUNT * channels;
+    /* no head (one ear, or a spacing of 0) sends nothing to the twins:
+     * they get no planes */
+    s->count = head_radius_m > 0 ? FG_BUS_COUNT : FG_BUS_PLAIN;
+    size_t planes = (size_t)s->count * channels;
+    /* the longest power of two whose planes fit FG_BUS_PLANE_BYTES */
+    const size_t fit = FG_BUS_PLANE_BYTES / (planes * (sizeof *s->d3 + sizeof *s->pre));
+    uint32_t frames = 1;
+    while (frames < max_frames && 2 * (size_t)frames <= fit)
+        frames *= 2;
+    max_frames = frames < max_frames ? frames : max_frames;
     s->d3 = calloc(planes * max_frames, sizeof *s->d3);
     s->pre = calloc(planes * max_frames, sizeof *s->pre);
-    s->fir = calloc(2 * (size_t)channels, sizeof *s->fir);
+    s->fir = calloc((size_t)(s->count / FG_BUS_PLAIN) * channels, sizeof *s->fir);
     if (!s->d3 || !s->pre || !s->fir) {
         fg_bus_set_deinit(s);
         return FG_ERR_NO_MEMORY;
@@ -37,13 +46,12 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     s->fs_hz = fs_hz;
     s->air = *air;
     fg_result r = fg_band_plan_init(&s->plan, BAND_NEAR_M, BAND_FAR_M, FG_ABSORPTION_BANDS);
-    for (unsigned i = 0; i < 2 * channels && r == FG_OK; i++)
+    for (unsigned i = 0; i < (s->count / FG_BUS_PLAIN) * channels && r == FG_OK; i++)
         r = fg_abe_fir_init(&s->fir[i], fs_hz);
     if (r != FG_OK) {
         fg_bus_set_deinit(s);
         return r;
     }
-    /* no head (one ear, or a spacing of 0) sends nothing to the twins */
     fg_biquad hp = fg_head_highpass(head_radius_m > 0 ? head_radius_m : 1.0, fs_hz, c_m_s);
     for (unsigned b = 0; b < FG_BUS_PLAIN; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
@@ -51,7 +59,7 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
             fg_iir_reset(&s->shadow[b][ch]);
         }
     }
-    for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
+    for (unsigned b = 0; b < s->count; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
             size_t plane = (size_t)b * channels + ch;
             fg_accum_begin(&s->bus[b].accum[ch], s->d3 + plane * max_frames, max_frames);
@@ -94,7 +102,7 @@ unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m, double *w_next)
 
 void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
 {
-    for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
+    for (unsigned b = 0; b < s->count; b++) {
         for (unsigned ch = 0; ch < s->channels; ch++) {
             fg_bus *bus = &s->bus[b];
             fg_accum_restart(&bus->accum[ch], n);
@@ -144,48 +152,81 @@ static bool all_finite(const float *x, uint32_t n)
     return sum == 0.0f;
 }
 
+/* Runs filter(b, ch) over the planes x[k] of channels ch[k], k < count,
+ * FG_IIR_LANES at a time (the filters of one bus share their coefficients),
+ * and notes in tail[k] whether it still rings. */
+static void filter_planes(fg_iir *(*filter)(fg_bus_set *, unsigned, unsigned), fg_bus_set *s,
+                          unsigned b, const unsigned *ch, float *const *x, unsigned count,
+                          uint32_t n, bool *tail)
+{
+    for (unsigned k = 0; k < count; k += FG_IIR_LANES) {
+        unsigned lanes = count - k < FG_IIR_LANES ? count - k : FG_IIR_LANES;
+        fg_iir *f[FG_IIR_LANES];
+        for (unsigned j = 0; j < lanes; j++)
+            f[j] = filter(s, b, ch[k + j]);
+        fg_iir_process_lanes(f, x + k, lanes, n);
+        for (unsigned j = 0; j < lanes; j++)
+            tail[k + j] = tail[k + j] || ringing(f[j]);
+    }
+}
+
+/* The twin's head high-pass of bus b >= FG_BUS_PLAIN, ear ch. */
+static fg_iir *shadow_filter(fg_bus_set *s, unsigned b, unsigned ch)
+{
+    return &s->shadow[b - FG_BUS_PLAIN][ch];
+}
+
 uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
 {
     uint64_t dropped = 0;
-    for (unsigned b = 0; b < FG_BUS_COUNT; b++) {
-        for (unsigned ch = 0; ch < s->channels; ch++) {
-            fg_bus *bus = &s->bus[b];
-            if (b == FG_BUS_DRY && !bus->pre_used[ch]) {
+    for (unsigned b = 0; b < s->count; b++) {
+        fg_bus *bus = &s->bus[b];
+        /* the bus's channels to filter this block: their planes, whether
+         * they had input, whether a filter still rings */
+        unsigned ch[FG_BUS_MAX_CHANNELS], count = 0;
+        float *x[FG_BUS_MAX_CHANNELS];
+        bool input[FG_BUS_MAX_CHANNELS], tail[FG_BUS_MAX_CHANNELS];
+        for (unsigned c = 0; c < s->channels; c++) {
+            if (b == FG_BUS_DRY && !bus->pre_used[c]) {
                 /* the first bus into out, which render zeroed */
-                fg_accum_end(&bus->accum[ch], out[ch], 1.0f);
-                if (bus->accum[ch].touched && !all_finite(out[ch], n)) {
-                    memset(out[ch], 0, n * sizeof(float));
+                fg_accum_end(&bus->accum[c], out[c], 1.0f);
+                if (bus->accum[c].touched && !all_finite(out[c], n)) {
+                    memset(out[c], 0, n * sizeof(float));
                     dropped++;
                 }
                 continue;
             }
-            if (!live(bus, b, ch))
+            if (!live(bus, b, c))
                 continue;
-            bool input = bus->accum[ch].touched || bus->pre_used[ch];
-            float *x = bus->pre[ch];
-            bus->pre_used[ch] = true; /* zero it again next block */
-            fg_accum_end(&bus->accum[ch], x, 1.0f);
-            if (input && !all_finite(x, n)) {
-                memset(x, 0, n * sizeof(float));
+            bool in = bus->accum[c].touched || bus->pre_used[c];
+            float *plane = bus->pre[c];
+            bus->pre_used[c] = true; /* zero it again next block */
+            fg_accum_end(&bus->accum[c], plane, 1.0f);
+            if (in && !all_finite(plane, n)) {
+                memset(plane, 0, n * sizeof(float));
                 dropped++;
                 continue;
             }
-            bool tail = false;
-            if (is_band(b)) {
-                fg_iir_process(band_filter(s, b, ch), x, n);
-                tail = ringing(band_filter(s, b, ch));
+            ch[count] = c;
+            x[count] = plane;
+            input[count] = in;
+            tail[count] = false;
+            count++;
+        }
+        if (is_band(b))
+            filter_planes(band_filter, s, b, ch, x, count, n, tail);
+        if (is_fir(b)) {
+            for (unsigned k = 0; k < count; k++) {
+                fg_abe_fir_process(&s->fir[(b / FG_BUS_PLAIN) * s->channels + ch[k]], x[k], n);
+                bus->quiet[ch[k]] = input[k] ? 0 : bus->quiet[ch[k]] + n;
             }
-            if (is_fir(b)) {
-                fg_abe_fir_process(&s->fir[(b / FG_BUS_PLAIN) * s->channels + ch], x, n);
-                bus->quiet[ch] = input ? 0 : bus->quiet[ch] + n;
-            }
-            if (b >= FG_BUS_PLAIN) {
-                fg_iir_process(&s->shadow[b - FG_BUS_PLAIN][ch], x, n);
-                tail = tail || ringing(&s->shadow[b - FG_BUS_PLAIN][ch]);
-            }
-            bus->ringing[ch] = tail;
+        }
+        if (b >= FG_BUS_PLAIN)
+            filter_planes(shadow_filter, s, b, ch, x, count, n, tail);
+        for (unsigned k = 0; k < count; k++) {
+            bus->ringing[ch[k]] = tail[k];
             for (uint32_t i = 0; i < n; i++)
-                out[ch][i] += x[i];
+                out[ch[k]][i] += x[k][i];
         }
     }
     return dropped;

@@ -4,11 +4,11 @@
  * Bus FG_BUS_DRY has no filter; FG_BUS_BAND0 + k carries sources between
  * the (k-1)-th and (k+1)-th ISO 9613-1 band centres, each split between
  * its two nearest bands, through that band's fitted IIR;
- * FG_BUS_FIR carries Abe's 200 Hz FIR. Each has a head-shadowed twin at
- * index + FG_BUS_PLAIN, which adds the high-pass of Brown & Duda's head
- * model (spatial/spherical_head_internal.h): a wave sent whole to a bus
- * and alpha - 1 of it to the twin is heard through the head's one-pole,
- * one-zero filter for its angle. The buses are shared by every voice: the
+ * FG_BUS_FIR carries Abe's 200 Hz FIR. With a head (two ears apart), each
+ * has a head-shadowed twin at index + FG_BUS_PLAIN, which adds the
+ * high-pass of Brown & Duda's head model (spatial/spherical_head_internal.h):
+ * a wave sent whole to a bus and alpha - 1 of it to the twin is heard
+ * through the head's one-pole, one-zero filter for its angle. The buses are shared by every voice: the
  * air's response depends only on the distance band. */
 #ifndef FULGUR_BUS_INTERNAL_H
 #define FULGUR_BUS_INTERNAL_H
@@ -35,6 +35,13 @@ enum {
  * (spatial/binaural_internal.h; a third-order ambisonic layout has 16). */
 #define FG_BUS_MAX_CHANNELS 50
 
+/* The most bytes the planes (a double and a float per frame, bus and
+ * channel) take: a longer max_frames is cut to the longest power of two
+ * that fits (stereo with the twins keeps 4096 frames, third-order
+ * ambisonics 1024, binaural 512), and the engine renders a longer call as
+ * blocks of that length (core/render.c). */
+#define FG_BUS_PLANE_BYTES (16u << 20)
+
 typedef struct fg_bus {
     fg_accum accum[FG_BUS_MAX_CHANNELS]; /* difference-domain input (the WM-waves), per channel */
     float *pre[FG_BUS_MAX_CHANNELS];     /* the channel's signal before the filters */
@@ -45,9 +52,12 @@ typedef struct fg_bus {
 
 typedef struct fg_bus_set {
     fg_bus bus[FG_BUS_COUNT];
+    unsigned count;      /* buses with planes: FG_BUS_COUNT with a head, else
+                          * FG_BUS_PLAIN (no twins) */
     unsigned channels;
-    uint32_t max_frames;
-    double *d3;          /* FG_BUS_COUNT * channels * max_frames */
+    uint32_t max_frames; /* the longest block: the max_frames asked, or fewer to fit
+                          * FG_BUS_PLANE_BYTES */
+    double *d3;          /* count * channels * max_frames */
     float *pre;          /* the same count of floats */
     /* filters: shared coefficients, state per ear */
     fg_band_plan plan;
@@ -55,14 +65,15 @@ typedef struct fg_bus_set {
     bool bands_designed; /* sim thread only: the audio thread touches a band's
                           * filter after adopting a voice that needed it, so
                           * the inbox ring orders the design before */
-    fg_abe_fir *fir;     /* [2 (plain, shadowed)][channels] */
+    fg_abe_fir *fir;     /* [count / FG_BUS_PLAIN (plain, shadowed)][channels] */
     fg_iir shadow[FG_BUS_PLAIN][FG_BUS_MAX_CHANNELS]; /* the twins' head high-pass */
     fg_air air;
     double fs_hz;
 } fg_bus_set;
 
-/* Allocates the buses for max_frames-frame blocks, the twins' filter for
- * a head of radius head_radius_m (0: none). [main-thread] */
+/* Allocates the buses for blocks of max_frames frames or of fewer, to fit
+ * FG_BUS_PLANE_BYTES (s->max_frames says), with the twins and their filter
+ * for a head of radius head_radius_m (0: none, no twins). [main-thread] */
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
                           double c_m_s, double head_radius_m, const fg_air *air);
 void fg_bus_set_deinit(fg_bus_set *s);

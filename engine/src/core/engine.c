@@ -170,9 +170,10 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
                : FG_ERR_NO_MEMORY;
     if (r == FG_OK && cfg.layout == FG_LAYOUT_BINAURAL) {
         unsigned planes = fg_layout_bus_channels(&cfg);
-        e->field_store = calloc((size_t)planes * cfg.max_block_frames, sizeof *e->field_store);
+        const uint32_t frames = e->buses.max_frames;
+        e->field_store = calloc((size_t)planes * frames, sizeof *e->field_store);
         for (unsigned ch = 0; ch < planes && e->field_store; ch++)
-            e->field[ch] = e->field_store + (size_t)ch * cfg.max_block_frames;
+            e->field[ch] = e->field_store + (size_t)ch * frames;
         r = e->field_store ? fg_binaural_init(&e->binaural, cfg.hrirs)
                            : FG_ERR_NO_MEMORY;
     }

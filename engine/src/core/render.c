@@ -20,22 +20,9 @@ static void absorb(const fg_listener *pose, uint64_t number, void *trajectory)
     fg_trajectory_push(trajectory, pose, number);
 }
 
-fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
+/* One block of nframes <= the buses' max_frames into the zeroed out. */
+static void render_block(fg_engine *e, float *const *out, uint32_t nframes)
 {
-    if (!e || !out)
-        return FG_ERR_NULL;
-    for (uint32_t ch = 0; ch < e->cfg.channels; ch++)
-        if (!out[ch])
-            return FG_ERR_NULL;
-    for (uint32_t ch = 0; ch < e->cfg.channels; ch++)
-        memset(out[ch], 0, (size_t)nframes * sizeof(float));
-    if (nframes > e->cfg.max_block_frames)
-        return FG_ERR_BLOCK_SIZE;
-    if (nframes == 0)
-        return FG_OK;
-
-    double t_begin = now_s();
-    fg_fp_env env = fg_fp_env_flush_denormals();
     uint64_t start = atomic_load_explicit(&e->frames, memory_order_relaxed);
 
     double start_s = (double)start / e->cfg.sample_rate_hz;
@@ -99,6 +86,32 @@ fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
         fg_count(&e->counters.non_finite_blocks, dropped);
 
     atomic_store_explicit(&e->frames, start + nframes, memory_order_release);
+}
+
+fg_result fg_engine_render(fg_engine *e, float *const *out, uint32_t nframes)
+{
+    if (!e || !out)
+        return FG_ERR_NULL;
+    for (uint32_t ch = 0; ch < e->cfg.channels; ch++)
+        if (!out[ch])
+            return FG_ERR_NULL;
+    for (uint32_t ch = 0; ch < e->cfg.channels; ch++)
+        memset(out[ch], 0, (size_t)nframes * sizeof(float));
+    if (nframes > e->cfg.max_block_frames)
+        return FG_ERR_BLOCK_SIZE;
+    if (nframes == 0)
+        return FG_OK;
+
+    double t_begin = now_s();
+    fg_fp_env env = fg_fp_env_flush_denormals();
+    /* a call longer than the buses' block is rendered as blocks of it */
+    float *part[FG_BUS_MAX_CHANNELS];
+    for (uint32_t done = 0, n; done < nframes; done += n) {
+        n = nframes - done < e->buses.max_frames ? nframes - done : e->buses.max_frames;
+        for (uint32_t ch = 0; ch < e->cfg.channels; ch++)
+            part[ch] = out[ch] + done;
+        render_block(e, part, n);
+    }
     fg_count(&e->counters.blocks, 1);
     fg_fp_env_restore(env);
     if (now_s() - t_begin > nframes / e->cfg.sample_rate_hz)

@@ -82,13 +82,14 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event_ear *ear, fg_
     const double next = ear->band_w;
     for (unsigned k = 0; k < FG_PLAY_BUSES; k++)
         play->bus[k] = ear->bus + k / 2 + (k % 2) * FG_BUS_PLAIN;
-    /* the first gain (the ear's, or W's) is 1: its status is the wave's,
-     * the same on every channel; a channel of gain 0 gets nothing */
+    /* a channel of gain 0 gets nothing; the wave's status is that of the
+     * first channel it reaches, the same on every one (stereo's ear and
+     * ambisonics' W have gain 1; binaural's loudspeaker 0 mostly 0) */
     *units = 1;
     if (m->path_units) {
         uint64_t paths = 0;
         for (unsigned c = 0; c < count; c++)
-            if (c == 0 || gain[c] != 0.0)
+            if (gain[c] != 0.0)
                 paths += (1u + (ear->shadow != 0.0)) * (1u + (next != 0.0 && next != 1.0));
         *units += paths * m->path_units(ear, play);
     }
@@ -98,15 +99,17 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event_ear *ear, fg_
     if (placed == FG_WAVE_NON_FINITE)
         return FG_WAVE_NON_FINITE;
     fg_wave_status st = FG_WAVE_DONE;
+    bool reached = false;
     for (unsigned c = 0; c < count; c++) {
-        if (c > 0 && gain[c] == 0.0)
+        if (gain[c] == 0.0)
             continue;
         play->ch = out + c;
         for (unsigned k = 0; k < FG_PLAY_BUSES; k++)
             play->share[k] = gain[c] * (k % 2 ? ear->shadow : 1.0) * (k / 2 ? next : 1.0 - next);
         fg_wave_status here = add(ear, play, at);
-        if (c == 0 || here == FG_WAVE_NON_FINITE)
+        if (!reached || here == FG_WAVE_NON_FINITE)
             st = here;
+        reached = true;
         if (here == FG_WAVE_NON_FINITE)
             break;
     }
