@@ -119,8 +119,17 @@ static bool at_rest(const fg_listener *p)
     return p->velocity[0] == 0.0 && p->velocity[1] == 0.0 && p->velocity[2] == 0.0;
 }
 
-/* The newest pose, as its writer (holding the turn) sees it. */
-static void newest(const fg_pose_queue *q, uint64_t n, fg_listener *pose)
+/* Are p and q both at rest, in the same place (bit for bit)? */
+static bool rests_where(const fg_listener *p, const fg_listener *q)
+{
+    return at_rest(p) && at_rest(q) && memcmp(p->position, q->position, sizeof p->position) == 0 &&
+           memcmp(p->forward, q->forward, sizeof p->forward) == 0 &&
+           memcmp(p->up, q->up, sizeof p->up) == 0;
+}
+
+/* Pose number n (from 1, among the last FG_POSE_QUEUE), as its writer
+ * (holding the turn) sees it. */
+static void written(const fg_pose_queue *q, uint64_t n, fg_listener *pose)
 {
     const fg_listener_cell *c = &q->slot[(n - 1) % FG_POSE_QUEUE];
     uint64_t w[FG_POSE_WORDS];
@@ -136,12 +145,20 @@ bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose)
                                                   memory_order_relaxed))
         idle = 0;
     uint64_t n = atomic_load_explicit(&q->published, memory_order_relaxed);
-    fg_listener last;
-    newest(q, n, &last);
-    bool same = at_rest(pose) && at_rest(&last) &&
-                memcmp(pose->position, last.position, sizeof pose->position) == 0 &&
-                memcmp(pose->forward, last.forward, sizeof pose->forward) == 0 &&
-                memcmp(pose->up, last.up, sizeof pose->up) == 0;
+    fg_listener last, before;
+    written(q, n, &last);
+    /* The trajectory gives a pose at rest that moved from the one before it
+     * that chord's velocity (core/trajectory_internal.h), and carries it on
+     * past the newest pose: a body is known to rest only from the first
+     * pose, or from a pose at rest that followed one at rest in the same
+     * place. Until then the same pose sent again is published: it stops
+     * the body where it is. */
+    bool settled = n == 1;
+    if (!settled) {
+        written(q, n - 1, &before);
+        settled = rests_where(&last, &before) && before.time_s < last.time_s;
+    }
+    bool same = settled && rests_where(pose, &last);
     if (!same) {
         fg_listener_cell_write(&q->slot[n % FG_POSE_QUEUE], pose);
         atomic_store_explicit(&q->published, n + 1, memory_order_release);
