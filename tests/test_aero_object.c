@@ -733,7 +733,9 @@ static void send_again(fg_engine *e, fg_voice_id id, int b, void *arg)
  * block (a VR app re-sending it each frame) sounds exactly as with the
  * one pose of its post: a 50 cm rod in a 10 m/s wind, both ears byte for
  * byte over 1.6 s, its fastest cross-flow the wind's; in still air
- * nothing at all (no speed comes of poses that do not move). Its axis
+ * nothing at all (no speed comes of poses that do not move); the same
+ * when it was posted 1.5 m away and put here before it sounded (that
+ * pose replaces the post's, and its repeats are dropped too). Its axis
  * and normal have lengths other than 1 and are not perpendicular, so the
  * record's normalisation is repeated too. */
 static void resting_pose_republished(void **state)
@@ -746,14 +748,24 @@ static void resting_pose_republished(void **state)
         o.start_m = -0.25, o.end_m = 0.25;
         o.pose.axis[0] = 0.3, o.pose.axis[2] = 2.0;
         o.pose.normal[0] = 3.0, o.pose.normal[1] = 0.2, o.pose.normal[2] = -0.1;
-        float *once[2], *again[2];
-        fg_aero_report r_once, r_again;
-        for (int k = 0; k < 2; k++) {
+        float *once[2], *again[2], *moved[2];
+        fg_aero_report r_once, r_again, r_moved;
+        for (int k = 0; k < 3; k++) {
             fg_engine *e = make_engine(2);
             fg_voice_id id;
-            assert_int_equal(fg_aero_object_post(e, &o, &id), FG_OK);
-            render_ears(e, id, 300, k ? send_again : NULL, &o.pose, k ? again : once);
-            assert_int_equal(fg_aero_object_get_report(e, id, k ? &r_again : &r_once), FG_OK);
+            fg_aero_object first = o;
+            first.pose.position[0] = k == 2 ? 1.5 : first.pose.position[0];
+            assert_int_equal(fg_aero_object_post(e, &first, &id), FG_OK);
+            /* k == 2: posted elsewhere and put here before it sounds, at
+             * the same time (the pose replaces the post's) */
+            if (k == 2)
+                assert_int_equal(fg_aero_object_set_pose(e, id, &o.pose), FG_OK);
+            float **out = k == 0 ? once : k == 1 ? again : moved;
+            render_ears(e, id, 300, k ? send_again : NULL, &o.pose, out);
+            assert_int_equal(fg_aero_object_get_report(e, id,
+                                                       k == 0 ? &r_once : k == 1 ? &r_again
+                                                                                 : &r_moved),
+                             FG_OK);
             fg_engine_destroy(e);
         }
         size_t n = 300 * 256;
@@ -763,15 +775,20 @@ static void resting_pose_republished(void **state)
         print_message("%s: peak %.4g Pa, fastest cross-flow %.6f / %.6f m/s\n",
                       still_air ? "still air" : "10 m/s wind", peak, r_once.max_speed_m_s,
                       r_again.max_speed_m_s);
-        for (int ch = 0; ch < 2; ch++)
-            if (memcmp(once[ch], again[ch], n * sizeof(float)) != 0) {
-                size_t i = 0;
-                while (once[ch][i] == again[ch][i])
-                    i++;
-                fail_msg("%s, ear %d: sample %zu is %.9g once, %.9g re-published",
-                         still_air ? "still air" : "wind", ch, i, once[ch][i], again[ch][i]);
+        for (int k = 1; k < 3; k++)
+            for (int ch = 0; ch < 2; ch++) {
+                const float *x = k == 1 ? again[ch] : moved[ch];
+                if (memcmp(once[ch], x, n * sizeof(float)) != 0) {
+                    size_t i = 0;
+                    while (once[ch][i] == x[i])
+                        i++;
+                    fail_msg("%s, ear %d: sample %zu is %.9g once, %.9g re-published%s",
+                             still_air ? "still air" : "wind", ch, i, once[ch][i], x[i],
+                             k == 2 ? " after a move before it sounds" : "");
+                }
             }
         assert_true(r_again.max_speed_m_s == r_once.max_speed_m_s);
+        assert_true(r_moved.max_speed_m_s == r_once.max_speed_m_s);
         if (still_air) {
             assert_true(peak == 0.0);
             assert_true(r_again.max_speed_m_s == 0.0);
@@ -782,7 +799,7 @@ static void resting_pose_republished(void **state)
             assert_true(fabs(r_again.max_speed_m_s - V0 * sqrt(1 - along * along)) < 1e-5);
         }
         for (int ch = 0; ch < 2; ch++)
-            free(once[ch]), free(again[ch]);
+            free(once[ch]), free(again[ch]), free(moved[ch]);
     }
     fg_aero_texture_destroy(t);
 }

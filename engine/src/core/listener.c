@@ -138,6 +138,24 @@ static void written(const fg_pose_queue *q, uint64_t n, fg_listener *pose)
     unpack(w, pose);
 }
 
+/* Does the trajectory (core/trajectory_internal.h) hold pose n, last, at
+ * rest? It joins last to the newest pose published before it with an
+ * earlier time (those at its time or later it replaced), and gives last
+ * the chord's velocity from there when that pose is elsewhere, carrying
+ * the body on along it past last. At rest: last is alone (the first
+ * pose, or it replaced every one before it), or that pose rests in the
+ * same place. Not known (beyond the queue's memory): false. */
+static bool known_to_rest(const fg_pose_queue *q, uint64_t n, const fg_listener *last)
+{
+    for (uint64_t k = n - 1; k >= 1 && n - k < FG_POSE_QUEUE; k--) {
+        fg_listener p;
+        written(q, k, &p);
+        if (p.time_s < last->time_s)
+            return rests_where(last, &p);
+    }
+    return n <= FG_POSE_QUEUE;
+}
+
 bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose)
 {
     unsigned idle = 0;
@@ -145,20 +163,9 @@ bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose)
                                                   memory_order_relaxed))
         idle = 0;
     uint64_t n = atomic_load_explicit(&q->published, memory_order_relaxed);
-    fg_listener last, before;
+    fg_listener last;
     written(q, n, &last);
-    /* The trajectory gives a pose at rest that moved from the one before it
-     * that chord's velocity (core/trajectory_internal.h), and carries it on
-     * past the newest pose: a body is known to rest only from the first
-     * pose, or from a pose at rest that followed one at rest in the same
-     * place. Until then the same pose sent again is published: it stops
-     * the body where it is. */
-    bool settled = n == 1;
-    if (!settled) {
-        written(q, n - 1, &before);
-        settled = rests_where(&last, &before) && before.time_s < last.time_s;
-    }
-    bool same = settled && rests_where(pose, &last);
+    bool same = rests_where(pose, &last) && known_to_rest(q, n, &last);
     if (!same) {
         fg_listener_cell_write(&q->slot[n % FG_POSE_QUEUE], pose);
         atomic_store_explicit(&q->published, n + 1, memory_order_release);
