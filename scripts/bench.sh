@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the benchmarks (Release) and runs them all, writing CSV and plots
 # to bench/results/. Takes a few minutes on 2 cores, and bench_aero (the
-# sound-texture precompute times) about an hour more; FULGUR_BENCH_SKIP=aero
-# leaves it out.
+# sound-texture precompute times) about 8 CPU minutes more (13 min wall on
+# a shared 2-core machine); FULGUR_BENCH_SKIP=aero leaves it out.
 #
 # usage: scripts/bench.sh [PEER]
 # PEER: a peer's program for bench_whole's comparison (bench/whole_process.c

@@ -15,6 +15,7 @@
 
 #include <cmocka.h>
 
+#include "core/listener_internal.h"
 #include "fulgur/fulgur.h"
 #include "sound/wmwave_internal.h"
 #include "spatial/spherical_head_internal.h"
@@ -314,11 +315,54 @@ static void still_listener_any_block(void **state)
     fg_tree_destroy(tree);
 }
 
+static fg_listener at_rest_at(double x, double t)
+{
+    return (fg_listener){.position = {x, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1},
+                         .time_s = t};
+}
+
+/* The pose queue drops a pose at rest sent again only where the
+ * trajectory holds the body at rest: not the first repeat of a pose
+ * reached by moving (it would run on along the chord's velocity), nor a
+ * repeat at the same time (it replaces the newest, which keeps its
+ * chord); yes after a pose that replaced all the others. */
+static void pose_queue_repeats_at_rest(void **state)
+{
+    (void)state;
+    static fg_pose_queue q;
+    fg_listener a = at_rest_at(0, 0);
+    fg_pose_queue_init(&q, &a);
+    fg_listener p = at_rest_at(0, 0.01);
+    assert_false(fg_pose_queue_push(&q, &p)); /* the first pose, alone */
+    p = at_rest_at(1, 0.02);
+    assert_true(fg_pose_queue_push(&q, &p)); /* moved: the chord from 0 */
+    p.time_s = 0.03;
+    assert_true(fg_pose_queue_push(&q, &p)); /* its first repeat stops it */
+    p.time_s = 0.04;
+    assert_false(fg_pose_queue_push(&q, &p));
+    p = at_rest_at(2, 0.05);
+    assert_true(fg_pose_queue_push(&q, &p));
+    assert_true(fg_pose_queue_push(&q, &p)); /* same time: still the chord from 1 */
+    p.time_s = 0.06;
+    assert_true(fg_pose_queue_push(&q, &p));
+    p.time_s = 0.07;
+    assert_false(fg_pose_queue_push(&q, &p));
+    p = at_rest_at(3, 0.0);
+    assert_true(fg_pose_queue_push(&q, &p)); /* replaces every pose: alone */
+    p.time_s = 0.08;
+    assert_false(fg_pose_queue_push(&q, &p));
+    fg_listener moving = at_rest_at(3, 0.09);
+    moving.velocity[0] = 1.0;
+    assert_true(fg_pose_queue_push(&q, &moving));
+    assert_true(fg_pose_queue_push(&q, &moving)); /* moving poses are all published */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(moving_listener_any_block),
         cmocka_unit_test(still_listener_any_block),
+        cmocka_unit_test(pose_queue_repeats_at_rest),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

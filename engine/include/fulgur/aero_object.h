@@ -129,7 +129,10 @@ FG_API FG_NODISCARD fg_result fg_aero_object_post(fg_engine *engine, const fg_ae
  * of extrapolation; a source's velocity is the origin's plus its distance
  * along the axis times the axis' rate of turn between the two poses (the
  * chord: for a steady turn of angle a per pose, 1 - a^2 / 24 of the exact
- * w x r, 0.5 % low for a 20 rad/s swing at 90 Hz). [any-thread] but not the
+ * w x r and up to a / 2 off its direction, so a stick's cross-flow is
+ * 0.21 % to 0.82 % low for a 20 rad/s swing at 90 Hz). A pose at rest
+ * sent again stops a body that moved to it and otherwise changes nothing
+ * (docs/aero-objects.md, "A body at rest"). [any-thread] but not the
  * audio thread, one writer per object, from the post until the voice is
  * collected (the caller orders its last call before fg_engine_collect).
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FOUND id is not a live aero object;

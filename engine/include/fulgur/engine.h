@@ -324,7 +324,8 @@ FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *
  * (a VR runtime's predicted display time): then every wave a block plays
  * arrives between two known poses. A host publishing "now" poses is
  * extrapolated along its velocity between frames; a pose at rest
- * republished unchanged costs nothing.
+ * republished unchanged costs nothing, but for its first repeat after a
+ * move, which stops the head where it rests.
  * [any-thread] but not the audio thread: meant for one writer (the frame
  * thread). Overlapping calls from several threads stay correct, but each
  * waits while another is writing, so it is not lock-free among writers.

@@ -119,14 +119,41 @@ static bool at_rest(const fg_listener *p)
     return p->velocity[0] == 0.0 && p->velocity[1] == 0.0 && p->velocity[2] == 0.0;
 }
 
-/* The newest pose, as its writer (holding the turn) sees it. */
-static void newest(const fg_pose_queue *q, uint64_t n, fg_listener *pose)
+/* Are p and q both at rest, in the same place (bit for bit)? */
+static bool rests_where(const fg_listener *p, const fg_listener *q)
+{
+    return at_rest(p) && at_rest(q) && memcmp(p->position, q->position, sizeof p->position) == 0 &&
+           memcmp(p->forward, q->forward, sizeof p->forward) == 0 &&
+           memcmp(p->up, q->up, sizeof p->up) == 0;
+}
+
+/* Pose number n (from 1, among the last FG_POSE_QUEUE), as its writer
+ * (holding the turn) sees it. */
+static void written(const fg_pose_queue *q, uint64_t n, fg_listener *pose)
 {
     const fg_listener_cell *c = &q->slot[(n - 1) % FG_POSE_QUEUE];
     uint64_t w[FG_POSE_WORDS];
     for (int i = 0; i < FG_POSE_WORDS; i++)
         w[i] = atomic_load_explicit(&((fg_listener_cell *)c)->words[i], memory_order_relaxed);
     unpack(w, pose);
+}
+
+/* Does the trajectory (core/trajectory_internal.h) hold pose n, last, at
+ * rest? It joins last to the newest pose published before it with an
+ * earlier time (those at its time or later it replaced), and gives last
+ * the chord's velocity from there when that pose is elsewhere, carrying
+ * the body on along it past last. At rest: last is alone (the first
+ * pose, or it replaced every one before it), or that pose rests in the
+ * same place. Not known (beyond the queue's memory): false. */
+static bool known_to_rest(const fg_pose_queue *q, uint64_t n, const fg_listener *last)
+{
+    for (uint64_t k = n - 1; k >= 1 && n - k < FG_POSE_QUEUE; k--) {
+        fg_listener p;
+        written(q, k, &p);
+        if (p.time_s < last->time_s)
+            return rests_where(last, &p);
+    }
+    return n <= FG_POSE_QUEUE;
 }
 
 bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose)
@@ -137,11 +164,8 @@ bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose)
         idle = 0;
     uint64_t n = atomic_load_explicit(&q->published, memory_order_relaxed);
     fg_listener last;
-    newest(q, n, &last);
-    bool same = at_rest(pose) && at_rest(&last) &&
-                memcmp(pose->position, last.position, sizeof pose->position) == 0 &&
-                memcmp(pose->forward, last.forward, sizeof pose->forward) == 0 &&
-                memcmp(pose->up, last.up, sizeof pose->up) == 0;
+    written(q, n, &last);
+    bool same = rests_where(pose, &last) && known_to_rest(q, n, &last);
     if (!same) {
         fg_listener_cell_write(&q->slot[n % FG_POSE_QUEUE], pose);
         atomic_store_explicit(&q->published, n + 1, memory_order_release);

@@ -55,8 +55,12 @@ void fg_listener_cell_read(const fg_listener_cell *cell, fg_listener *pose, unsi
 /* The queue holding one pose, published once. [main-thread] */
 void fg_pose_queue_init(fg_pose_queue *q, const fg_listener *pose);
 /* Publishes a pose; a pose at rest where the newest one rests is not
- * published again (returns false): nothing the listener hears changes.
- * [any-thread but audio] */
+ * published again (returns false) once the trajectory holds the body at
+ * rest there: the newest is alone (the first pose, or it replaced those
+ * before it), or the pose before it in time rests in the same place.
+ * Nothing the listener hears changes by it. The first repeat of a pose at
+ * rest reached by moving is published: the trajectory would otherwise
+ * carry the body on along the chord's velocity. [any-thread but audio] */
 bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose);
 /* The newest pose and its number (poses published before it and it);
  * retries while it is being written. [any-thread but audio] */

@@ -20,7 +20,11 @@
  *
  * A trajectory is still when it holds one pose at rest: then every time
  * sees that pose exactly as published (no normalisation), and the sound of
- * a still listener does not change with this module. */
+ * a still listener does not change with this module.
+ *
+ * fg_pose_queue_push (core/listener.c) mirrors the replacing and chord
+ * rules above to tell when a pose at rest sent again changes nothing:
+ * change them together. */
 #ifndef FULGUR_TRAJECTORY_INTERNAL_H
 #define FULGUR_TRAJECTORY_INTERNAL_H
 
