@@ -174,6 +174,42 @@ fg_result fg_aero_object_set_pose(fg_engine *engine, fg_voice_id id, const fg_ae
 fg_result fg_aero_object_set_wind(fg_engine *engine, fg_voice_id id, const fg_aero_wind *wind);
 fg_result fg_aero_object_get_report(fg_engine *engine, fg_voice_id id, fg_aero_report *out);
 
+/* fire.h (the sound's configuration) and fire_voice.h */
+typedef struct fg_fire_texture fg_fire_texture;
+typedef enum fg_fire_extension {
+    FG_FIRE_BANDWIDTH_EXTENSION = 0, FG_FIRE_TEXTURE = 1, FG_FIRE_LOW_ONLY = 2
+} fg_fire_extension;
+typedef struct fg_fire_bwe_config {
+    double alpha; double f_cut_hz; double sigma_cut_hz; double blend_low_hz;
+    double blend_high_hz; int half_window_frames; int beta_half_window_frames; uint64_t seed;
+} fg_fire_bwe_config;
+typedef struct fg_fire_sound_config {
+    double sample_rate_hz; double sim_rate_hz; double highpass_hz; fg_fire_extension extension;
+    fg_fire_bwe_config bwe; const fg_fire_texture *texture; double level_history_s;
+} fg_fire_sound_config;
+typedef struct fg_fire_pose { double position[3]; double velocity[3]; double time_s; } fg_fire_pose;
+typedef struct fg_fire_voice {
+    fg_fire_pose pose; double gain; fg_absorption absorption; double emit_time_s; double ring_s;
+} fg_fire_voice;
+typedef struct fg_fire_voice_report {
+    uint64_t capacity_frames; uint64_t pushed_frames; uint64_t held_frames; int64_t read_frame;
+    uint64_t underrun_frames; uint64_t underruns; uint64_t blocks; bool closed;
+} fg_fire_voice_report;
+typedef struct fg_fire_feed fg_fire_feed;
+fg_result fg_fire_voice_post(fg_engine *engine, const fg_fire_voice *f, fg_voice_id *id);
+fg_result fg_fire_voice_set_pose(fg_engine *engine, fg_voice_id id, const fg_fire_pose *pose);
+fg_result fg_fire_voice_push(fg_engine *engine, fg_voice_id id, const float *pa_at_1m,
+                             size_t frames, size_t *pushed);
+fg_result fg_fire_voice_close(fg_engine *engine, fg_voice_id id);
+fg_result fg_fire_voice_get_report(fg_engine *engine, fg_voice_id id, fg_fire_voice_report *out);
+fg_result fg_fire_feed_create(const fg_fire_sound_config *config, size_t max_steps,
+                              fg_fire_feed **out);
+void fg_fire_feed_destroy(fg_fire_feed *feed);
+double fg_fire_feed_latency_s(const fg_fire_feed *feed);
+fg_result fg_fire_feed_push(fg_fire_feed *feed, fg_engine *engine, fg_voice_id id,
+                            const double *flux_m3_s, size_t steps, size_t *taken);
+fg_result fg_fire_feed_finish(fg_fire_feed *feed, fg_engine *engine, fg_voice_id id, bool *done);
+
 /* lightning.h */
 #define FG_THUNDER_MAX_FEATURES 16
 #define FG_LIGHTNING_MAX_SKELETON 65536

@@ -257,6 +257,85 @@ class Engine:
         check(code, "Engine.aero_report")
         return _convert.as_dict(report)
 
+    def post_fire(self, position, *, velocity=(0.0, 0.0, 0.0), gain=0.0, absorption="off",
+                  emit_time_s=None, ring_s=0.0):
+        """Posts a fire voice (fg_fire_voice_post): a point source at
+        position (moving at velocity) whose stream, the fire's pressure at
+        1 m, you push with push_fire or a FireFeed; absorption "off" or
+        "iso9613"; emit_time_s the engine clock of stream frame 0 (None:
+        the adopting block); ring_s the sample ring's seconds (0: 0.5).
+        Returns the voice's id. FulgurError: the engine refused it
+        (docs/fire-voice.md)."""
+        f = ffi.new("fg_fire_voice *")
+        _fire_pose(f.pose, position, velocity, 0.0)
+        f.absorption = propagation_config({"absorption": absorption}).absorption
+        _convert.fill(f, {"gain": gain, "ring_s": ring_s,
+                          "emit_time_s": EMIT_NOW if emit_time_s is None else emit_time_s},
+                      "post_fire")
+        voice = ffi.new("fg_voice_id *")
+        handle = self._enter(self._sim, "post_fire")
+        try:
+            code = lib.fg_fire_voice_post(handle, f, voice)
+        finally:
+            self._leave(self._sim)
+        check(code, "Engine.post_fire")
+        return int(voice[0])
+
+    def set_fire_pose(self, voice, position, velocity=(0.0, 0.0, 0.0), time_s=0.0):
+        """Publishes where fire voice is at time_s on the engine clock (0:
+        now): fg_fire_voice_set_pose. One thread per fire."""
+        pose = ffi.new("fg_fire_pose *")
+        _fire_pose(pose, position, velocity, time_s)
+        handle = self._enter(None, "set_fire_pose")
+        try:
+            code = lib.fg_fire_voice_set_pose(handle, _voice(voice, "set_fire_pose"), pose)
+        finally:
+            self._leave(None)
+        check(code, "Engine.set_fire_pose")
+
+    def push_fire(self, voice, pa_at_1m):
+        """Appends samples (the fire's pressure at 1 m, Pa, one per audio
+        frame) to fire voice's stream, as many as its ring has room for:
+        fg_fire_voice_push. Returns how many were taken; push the rest
+        again later. A sim-thread call."""
+        samples = np.ascontiguousarray(pa_at_1m, dtype=np.float32)
+        if samples.ndim != 1:
+            raise ValueError(f"Engine.push_fire: pa_at_1m: expected one dimension, got shape "
+                             f"{samples.shape}")
+        pushed = ffi.new("size_t *")
+        handle = self._enter(self._sim, "push_fire")
+        try:
+            code = lib.fg_fire_voice_push(handle, _voice(voice, "push_fire"),
+                                          ffi.from_buffer("float[]", samples), samples.size,
+                                          pushed)
+        finally:
+            self._leave(self._sim)
+        check(code, "Engine.push_fire")
+        return int(pushed[0])
+
+    def close_fire(self, voice):
+        """Ends fire voice's stream (fg_fire_voice_close): it plays what it
+        holds and finishes. A sim-thread call."""
+        handle = self._enter(self._sim, "close_fire")
+        try:
+            code = lib.fg_fire_voice_close(handle, _voice(voice, "close_fire"))
+        finally:
+            self._leave(self._sim)
+        check(code, "Engine.close_fire")
+
+    def fire_report(self, voice):
+        """What fire voice has done (fg_fire_voice_report) as a dict:
+        capacity_frames, pushed_frames, held_frames, read_frame,
+        underrun_frames, underruns, blocks, closed."""
+        report = ffi.new("fg_fire_voice_report *")
+        handle = self._enter(None, "fire_report")
+        try:
+            code = lib.fg_fire_voice_get_report(handle, _voice(voice, "fire_report"), report)
+        finally:
+            self._leave(None)
+        check(code, "Engine.fire_report")
+        return _convert.as_dict(report)
+
     def stop(self, voice):
         """Ends a continuous voice (or a bolt's later strokes)."""
         voice = _voice(voice, "stop")
@@ -383,6 +462,12 @@ def _aero_pose(pose, position, axis, normal, velocity, time_s):
     for name, value in (("position", position), ("axis", axis), ("normal", normal),
                         ("velocity", velocity)):
         _set3(getattr(pose, name), value, name)
+    pose.time_s = float(time_s)
+
+
+def _fire_pose(pose, position, velocity, time_s):
+    _set3(pose.position, position, "position")
+    _set3(pose.velocity, velocity, "velocity")
     pose.time_s = float(time_s)
 
 
