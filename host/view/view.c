@@ -68,6 +68,11 @@ static int frame(view *v, fgg_context *ctx, fgg_picture *pic, uint32_t k,
                  const view_event *events, size_t count, size_t *next)
 {
     bool headless = v->opt.backend != FGG_BACKEND_WINDOW;
+    /* headless: the audio has played the last frame before this one
+     * publishes poses, so each block of sound sees the same poses in every
+     * run (a pose queued further ahead moves the paths' rounding) */
+    if (headless && k > 0)
+        view_wait_audio(v);
     double before = v->now_s;
     v->now_s = headless ? k / v->opt.fps : fg_engine_time_s(v->engine);
     /* the head one frame ahead, at the end of the sound this frame lets
