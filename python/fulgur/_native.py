@@ -185,7 +185,8 @@ typedef struct fg_thunder_feature {
 } fg_thunder_feature;
 typedef struct fg_lightning_config {
     const double *skeleton_m; size_t skeleton_points; double strike_m[2]; double height_m;
-    double in_cloud_m; double in_cloud_azimuth_deg; double segment_m; double turn_mean_deg; double max_deviation_deg; double lookahead_m;
+    double in_cloud_m; double in_cloud_azimuth_deg;
+    double segment_m; double turn_mean_deg; double max_deviation_deg; double lookahead_m;
     double branch_probability; double branch_length_m; uint32_t branch_depth;
     const fg_thunder_feature *features; size_t feature_count; double listener_m[3];
     uint32_t max_nodes; uint64_t seed;
