@@ -4,7 +4,7 @@
  *   1. spectra of a 5 km bolt heard at 1 km and at 8 km;
  *   2. the duration of a 5 km bolt heard from 3 km: how long its A-weighted
  *      F level stays above a rural background, and its 90 % energy span;
- *      then the same with 0-10 km of in-cloud channel (a given skeleton);
+ *      then the same with 0-10 km of the generator's in-cloud channel;
  *   3. the shadow zone at D = 3 km, R = 55 km, measured segment by segment
  *      against the tangent ray and the creeping wave's decay;
  *   4. the lightning preset's mean segments and sound against table 2;
@@ -102,27 +102,22 @@ static fg_tree *bolt(double x, double y, uint64_t seed)
 }
 
 /* A 5 km bolt striking at (0, 3000) down a given skeleton: eight jittered
- * pieces from (400, 3300, 5000) to the strike, led into from a horizontal
- * in-cloud channel cloud_m long at the cloud's height, across the line of
+ * pieces from (400, 3300, 5000) to the strike, with the generator's
+ * in-cloud channel cloud_m long from its root toward +x, across the line of
  * sight of an ear at the origin (none for 0). */
 static fg_tree *cloud_bolt(double cloud_m)
 {
-    double k[3 * 13];
-    size_t n = 0;
-    for (int j = 0; cloud_m > 0 && j < 4; j++, n++) {
-        k[3 * n] = 400 + cloud_m * (1 - j / 4.0);
-        k[3 * n + 1] = 3300;
-        k[3 * n + 2] = 5000 + 200 * sin(j);
-    }
-    for (int j = 0; j <= 8; j++, n++) {
+    double k[3 * 9];
+    for (int j = 0; j <= 8; j++) {
         double w = j / 8.0, wobble = j > 0 && j < 8 ? 150 : 0;
-        k[3 * n] = 400 * (1 - w) + wobble * sin(3 * j);
-        k[3 * n + 1] = 3000 + 300 * (1 - w) + wobble * cos(2 * j);
-        k[3 * n + 2] = 5000 * (1 - w);
+        k[3 * j] = 400 * (1 - w) + wobble * sin(3 * j);
+        k[3 * j + 1] = 3000 + 300 * (1 - w) + wobble * cos(2 * j);
+        k[3 * j + 2] = 5000 * (1 - w);
     }
     fg_tree *t;
     must(fg_tree_create(16384, &t), "tree");
-    fg_lightning_config p = {.skeleton_m = k, .skeleton_points = n, .seed = 7};
+    fg_lightning_config p = {.skeleton_m = k, .skeleton_points = 9, .in_cloud_m = cloud_m,
+                             .seed = 7};
     must(fg_lightning_generate(&p, t, NULL), "lightning");
     return t;
 }
@@ -442,9 +437,11 @@ int main(int argc, char **argv)
     /* the in-cloud channel the random skeleton lacks */
     fprintf(c.md, "The random skeleton is a cloud-to-ground channel only. Real flashes also "
                   "run for kilometres horizontally inside the cloud (Rakov & Uman, *Lightning: "
-                  "Physics and Effects*, 2003), and that channel's sound arrives later. The "
-                  "same kind of 5 km bolt down a given skeleton, led into from a horizontal "
-                  "channel at the cloud's height across the line of sight (lightning preset):"
+                  "Physics and Effects*, 2003, not retrieved; see docs/generators-lightning.md "
+                  "for the sources that were), and that channel's sound arrives later. The "
+                  "same kind of 5 km bolt down a given skeleton, with the generator's "
+                  "in-cloud channel (`in_cloud`) grown from its root at the cloud's height "
+                  "across the line of sight (lightning preset):"
                   "\n\n| in-cloud channel | segments | heard | 90 %% energy span |\n"
                   "|---|---|---|---|\n");
     static const double cloud_km[] = {0.0, 2.0, 5.0, 10.0};
@@ -459,7 +456,8 @@ int main(int argc, char **argv)
         fg_tree_destroy(t);
         free(s.x);
     }
-    fprintf(c.md, "\nThe generator's default stays without it: its segment count is matched "
+    fprintf(c.md, "\nThe generator's default stays without it (`in_cloud` 0): its segment "
+                  "count is matched "
                   "to Matsuyama's table 2 (section 4), which 2 to 10 km of in-cloud channel "
                   "multiply by %.1f to %.1f here.\n\n",
             (double)cloud_segs[1] / (double)cloud_segs[0],

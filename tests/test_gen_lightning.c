@@ -85,6 +85,47 @@ static void charges_grow(void **state)
     fg_tree_destroy(t);
 }
 
+/* "in_cloud": the same tree, then a channel from the root 5 km along
+ * "in_cloud_azimuth_deg" at the root's height; "in_cloud": 0 is no key. */
+static void in_cloud_channel_from_json(void **state)
+{
+    (void)state;
+    fg_tree *plain, *zero, *cloud;
+    char err[256];
+    assert_int_equal(fg_tree_create(0, &plain), FG_OK);
+    assert_int_equal(fg_tree_create(0, &zero), FG_OK);
+    assert_int_equal(fg_tree_create(0, &cloud), FG_OK);
+    assert_int_equal(run(gen_lightning, "{\"type\":\"lightning\",\"distance\":3000}", plain, err,
+                         sizeof err),
+                     0);
+    assert_int_equal(run(gen_lightning, "{\"type\":\"lightning\",\"distance\":3000,\"in_cloud\":0}",
+                         zero, err, sizeof err),
+                     0);
+    assert_int_equal(run(gen_lightning,
+                         "{\"type\":\"lightning\",\"distance\":3000,\"in_cloud\":5000,"
+                         "\"in_cloud_azimuth_deg\":-90}",
+                         cloud, err, sizeof err),
+                     0);
+    size_t n0 = fg_tree_count(plain);
+    assert_int_equal(fg_tree_count(zero), n0);
+    assert_memory_equal(fg_tree_nodes(zero), fg_tree_nodes(plain), n0 * sizeof(fg_node));
+    assert_true(fg_tree_count(cloud) > n0 + 5000 / 3);
+    const fg_node *n = fg_tree_nodes(cloud);
+    assert_memory_equal(n, fg_tree_nodes(plain), n0 * sizeof(fg_node));
+    /* the in-cloud channel comes first after the old tree, ending 5 km
+     * toward -y of the root at its height */
+    size_t last = n0;
+    while (last + 1 < fg_tree_count(cloud) && n[last + 1].parent == (int32_t)last)
+        last++;
+    assert_int_equal(n[n0].parent, 0);
+    assert_float_equal(n[last].x, n[0].x, 1e-6);
+    assert_float_equal(n[last].y, n[0].y - 5000, 1e-6);
+    assert_float_equal(n[last].z, n[0].z, 1e-6);
+    fg_tree_destroy(plain);
+    fg_tree_destroy(zero);
+    fg_tree_destroy(cloud);
+}
+
 static void errors_name_the_path(void **state)
 {
     (void)state;
@@ -110,6 +151,12 @@ static void errors_name_the_path(void **state)
         {gen_lightning,
          "{\"type\":\"lightning\",\"design\":[{\"feature\":\"boom\",\"start\":0.2,\"end\":0.5}]}",
          "discharges[0].generator.design[0].feature: required: \"clap\", \"rumble\" or \"roar\""},
+        {gen_lightning, "{\"type\":\"lightning\",\"in_cloud\":25000}",
+         "discharges[0].generator.in_cloud: 25000 is outside 0..20000"},
+        {gen_lightning, "{\"type\":\"lightning\",\"in_cloud\":-1}",
+         "discharges[0].generator.in_cloud: -1 is outside 0..20000"},
+        {gen_lightning, "{\"type\":\"lightning\",\"in_cloud\":5000,\"in_cloud_azimuth_deg\":400}",
+         "discharges[0].generator.in_cloud_azimuth_deg: 400 is outside -360..360"},
         {gen_lightning, "{\"type\":\"lightning\",\"strike\":[0,0],\"distance\":5}",
          "discharges[0].generator.strike: give \"strike\" or \"distance\", not both"},
         {gen_charges, "{\"type\":\"charges\",\"start\":[0,0,300]}",
@@ -144,6 +191,7 @@ int main(void)
         cmocka_unit_test(lightning_placed_from_listener),
         cmocka_unit_test(skeleton_moved_to_distance),
         cmocka_unit_test(charges_grow),
+        cmocka_unit_test(in_cloud_channel_from_json),
         cmocka_unit_test(errors_name_the_path),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -325,6 +325,95 @@ static void bad_input(void **state)
     fg_tree_destroy(t);
 }
 
+static uint64_t tree_hash(fg_tree *t)
+{
+    uint64_t h = 1469598103934665603u; /* FNV-1a over the nodes' bytes */
+    const unsigned char *b = (const unsigned char *)fg_tree_nodes(t);
+    for (size_t i = 0; i < fg_tree_count(t) * sizeof(fg_node); i++)
+        h = (h ^ b[i]) * 1099511628211u;
+    return h;
+}
+
+/* The in-cloud channel: none by default (the tree of the main branch
+ * before the option, node for node: its count and hash were taken from
+ * that build); with in_cloud_m a walk from the root along a jittered
+ * horizontal course of that length, appended after the tree grown
+ * without it. */
+static void in_cloud_channel(void **state)
+{
+    (void)state;
+    fg_lightning_config p = {.seed = 1};
+    fg_lightning_report r0, r5;
+    fg_tree *t0 = generate(&p, &r0);
+    assert_int_equal(fg_tree_count(t0), 9446);
+    assert_true(tree_hash(t0) == 0x3fdc5029e48d1fa3u);
+    assert_int_equal(r0.in_cloud_nodes, 0);
+    assert_int_equal(r0.in_cloud_first, fg_tree_count(t0));
+    assert_true(r0.in_cloud_length_m == 0);
+
+    const double length = 5000, az = 120 * DEG;
+    p.in_cloud_m = length;
+    p.in_cloud_azimuth_deg = 120;
+    fg_tree *t5 = generate(&p, &r5), *again = generate(&p, NULL);
+    size_t n0 = fg_tree_count(t0), n5 = fg_tree_count(t5);
+    const fg_node *n = fg_tree_nodes(t5);
+    /* the same seed repeats byte for byte; the tree without it is kept */
+    assert_int_equal(fg_tree_count(again), n5);
+    assert_memory_equal(fg_tree_nodes(again), n, n5 * sizeof(fg_node));
+    assert_memory_equal(fg_tree_nodes(t0), n, n0 * sizeof(fg_node));
+    assert_int_equal(r5.main_nodes, r0.main_nodes);
+    assert_int_equal(r5.in_cloud_first, n0);
+    size_t first = r5.in_cloud_first, end = first + r5.in_cloud_nodes;
+    /* at least one 3 m segment per 3 m of course, and its branches after it */
+    assert_true(r5.in_cloud_nodes >= (size_t)(length / 3));
+    assert_true(n5 > end);
+    /* a channel from the root, not the main one, ending on the course's end */
+    assert_int_equal(n[first].parent, 0);
+    const fg_node *root = &n[0], *last = &n[end - 1];
+    assert_float_equal(last->x, root->x + length * cos(az), 1e-6);
+    assert_float_equal(last->y, root->y + length * sin(az), 1e-6);
+    assert_float_equal(last->z, root->z, 1e-6);
+    double along_max = 0, side_max = 0, dz_max = 0, channel = 0;
+    for (size_t i = first; i < end; i++) {
+        assert_int_equal(n[i].parent, i == first ? 0 : (int32_t)(i - 1));
+        assert_int_equal(n[i].flags & FG_NODE_MAIN, 0);
+        assert_float_equal(seg_len(n, i), 3.0, 1e-6 + (i + 4 >= end ? 3.0 : 0));
+        double dx = n[i].x - root->x, dy = n[i].y - root->y;
+        double along = dx * cos(az) + dy * sin(az), side = -dx * sin(az) + dy * cos(az);
+        along_max = fmax(along_max, along);
+        side_max = fmax(side_max, fabs(side));
+        dz_max = fmax(dz_max, fabs(n[i].z - root->z));
+        channel += seg_len(n, i);
+    }
+    /* horizontal extent at the cloud's height: the course, within 1 % */
+    assert_true(along_max >= length && along_max <= 1.01 * length);
+    /* the course's joints: up to 0.08 L in x and y, 0.04 L up or down */
+    assert_true(side_max > 0.01 * length && side_max < 0.12 * length + 50);
+    assert_true(dz_max < 0.04 * length + 50);
+    assert_float_equal(r5.in_cloud_length_m, channel, 1e-6);
+    /* tortuous like the main channel: longer than its course */
+    assert_true(channel > 1.05 * length && channel < 1.5 * length);
+    for (size_t i = end; i < n5; i++) /* the in-cloud channel's branches */
+        assert_true((size_t)n[i].parent >= first);
+    /* a different course, a different channel; bad values refused */
+    p.in_cloud_azimuth_deg = 0;
+    fg_tree *t6 = generate(&p, NULL);
+    assert_true(memcmp(fg_tree_nodes(t6), n, n0 * sizeof(fg_node)) == 0);
+    assert_true(fg_tree_nodes(t6)[first + 10].x != n[first + 10].x);
+    fg_lightning_config out;
+    p.in_cloud_m = -1;
+    assert_int_equal(fg_lightning_config_resolve(&p, &out), FG_ERR_ARGUMENT);
+    p.in_cloud_m = NAN;
+    assert_int_equal(fg_lightning_config_resolve(&p, &out), FG_ERR_NOT_FINITE);
+    p.in_cloud_m = 100;
+    p.in_cloud_azimuth_deg = INFINITY;
+    assert_int_equal(fg_lightning_config_resolve(&p, &out), FG_ERR_NOT_FINITE);
+    fg_tree_destroy(t0);
+    fg_tree_destroy(t5);
+    fg_tree_destroy(again);
+    fg_tree_destroy(t6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -334,6 +423,7 @@ int main(void)
         cmocka_unit_test(branch_statistics),
         cmocka_unit_test(clap_rumble_roar),
         cmocka_unit_test(bad_input),
+        cmocka_unit_test(in_cloud_channel),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -153,7 +153,7 @@ int gen_lightning(const cJSON *spec, const char *path, const gen_context *ctx, f
         "type",     "skeleton",      "strike",          "distance",          "azimuth_deg",
         "height",   "segment",       "turn_mean_deg",   "max_deviation_deg", "lookahead",
         "branch_probability",        "branch_length",   "branch_depth",      "design",
-        "max_nodes", NULL};
+        "max_nodes", "in_cloud",     "in_cloud_azimuth_deg",                 NULL};
     if (json_check_keys(spec, path, keys, err, err_size))
         return -1;
     fg_lightning_config p = {.seed = ctx->seed};
@@ -163,6 +163,11 @@ int gen_lightning(const cJSON *spec, const char *path, const gen_context *ctx, f
     if (json_vector(spec, path, "strike", 2, p.strike_m, err, err_size) ||
         placement(spec, path, ctx, p.strike_m, &placed, err, err_size) ||
         json_number(spec, path, "height", positive, &p.height_m, err, err_size) ||
+        json_number(spec, path, "in_cloud", (number_range){0, 20000, false, false, false},
+                    &p.in_cloud_m, err, err_size) ||
+        json_number(spec, path, "in_cloud_azimuth_deg",
+                    (number_range){-360, 360, false, false, false}, &p.in_cloud_azimuth_deg, err,
+                    err_size) ||
         json_number(spec, path, "segment", positive, &p.segment_m, err, err_size) ||
         json_number(spec, path, "turn_mean_deg", (number_range){0, 90, true, true, false},
                     &p.turn_mean_deg, err, err_size) ||

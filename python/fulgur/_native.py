@@ -221,6 +221,7 @@ typedef struct fg_thunder_feature {
 } fg_thunder_feature;
 typedef struct fg_lightning_config {
     const double *skeleton_m; size_t skeleton_points; double strike_m[2]; double height_m;
+    double in_cloud_m; double in_cloud_azimuth_deg;
     double segment_m; double turn_mean_deg; double max_deviation_deg; double lookahead_m;
     double branch_probability; double branch_length_m; uint32_t branch_depth;
     const fg_thunder_feature *features; size_t feature_count; double listener_m[3];
@@ -231,6 +232,7 @@ typedef struct fg_lightning_stretch {
 } fg_lightning_stretch;
 typedef struct fg_lightning_report {
     size_t main_nodes; size_t segments; double main_length_m; double skeleton_length_m;
+    size_t in_cloud_first; size_t in_cloud_nodes; double in_cloud_length_m;
     fg_lightning_stretch features[16];
 } fg_lightning_report;
 fg_result fg_lightning_generate(const fg_lightning_config *config, fg_tree *out,

@@ -21,14 +21,18 @@ SHAPE_ROLES = {"fixed": lib.FG_ROLE_FIXED, "origin": lib.FG_ROLE_ORIGIN,
 
 def lightning(*, skeleton=None, features=None, **settings):
     """A cloud-to-ground bolt: (nodes, report). settings are fields of
-    fg_lightning_config (seed, height_m, strike_m, segment_m, turn_mean_deg,
-    max_deviation_deg, lookahead_m, branch_probability, branch_length_m,
-    branch_depth, listener_m, max_nodes); skeleton a (k, 3) array of points,
+    fg_lightning_config (seed, height_m, strike_m, in_cloud_m,
+    in_cloud_azimuth_deg, segment_m, turn_mean_deg, max_deviation_deg,
+    lookahead_m, branch_probability, branch_length_m, branch_depth,
+    listener_m, max_nodes); skeleton a (k, 3) array of points,
     root first (None: a random one); features designer thunder, a list of
     {"kind": "clap" | "rumble" | "roar", "start", "end", "amplitude"}.
     report: main_nodes (nodes 0 .. main_nodes - 1 are the main channel),
-    segments, main_length_m, skeleton_length_m, features (where each ended
-    up: first_node, last_node, distance_m)."""
+    segments, main_length_m, skeleton_length_m, in_cloud_first,
+    in_cloud_nodes and in_cloud_length_m (the in-cloud channel: nodes
+    in_cloud_first .. in_cloud_first + in_cloud_nodes - 1, none when
+    in_cloud_m is 0), features (where each ended up: first_node, last_node,
+    distance_m)."""
     cfg = _convert.fill(ffi.new("fg_lightning_config *"), settings, "lightning",
                         skip=("skeleton_points", "feature_count"))
     keep = []
@@ -62,7 +66,10 @@ def lightning(*, skeleton=None, features=None, **settings):
                  for i in range(cfg.feature_count)]
     return nodes, {"main_nodes": report.main_nodes, "segments": report.segments,
                    "main_length_m": report.main_length_m,
-                   "skeleton_length_m": report.skeleton_length_m, "features": stretches}
+                   "skeleton_length_m": report.skeleton_length_m,
+                   "in_cloud_first": report.in_cloud_first,
+                   "in_cloud_nodes": report.in_cloud_nodes,
+                   "in_cloud_length_m": report.in_cloud_length_m, "features": stretches}
 
 
 def charges(charges, start_m, **settings):

@@ -52,6 +52,25 @@ def test_lightning_settings_and_features():
     assert np.abs(r - clap["distance_m"]).max() < 3.0
 
 
+def test_lightning_in_cloud_channel():
+    """in_cloud_m: the tree without it, then a channel from the root ending
+    in_cloud_m away horizontally at the root's height."""
+    plain, r0 = fulgur.lightning(seed=4)
+    nodes, r = fulgur.lightning(seed=4, in_cloud_m=5000.0, in_cloud_azimuth_deg=45.0)
+    assert r0["in_cloud_nodes"] == 0 and r0["in_cloud_first"] == len(plain)
+    assert nodes[:len(plain)].tobytes() == plain.tobytes()
+    first, count = r["in_cloud_first"], r["in_cloud_nodes"]
+    assert first == len(plain) and count >= 5000 // 3 and len(nodes) > first + count
+    chan = nodes[first:first + count]
+    assert nodes["parent"][first] == 0 and not (chan["flags"] & fulgur.NODE_MAIN).any()
+    far = chan[-1]
+    assert far["x"] - nodes["x"][0] == pytest.approx(5000 / np.sqrt(2), abs=1e-6)
+    assert far["y"] - nodes["y"][0] == pytest.approx(5000 / np.sqrt(2), abs=1e-6)
+    assert far["z"] == pytest.approx(nodes["z"][0], abs=1e-6)
+    lengths = segment_lengths(nodes)[first - 1:first - 1 + count]  # segment i ends at node i + 1
+    assert r["in_cloud_length_m"] == pytest.approx(lengths.sum(), rel=1e-9)
+
+
 def test_charges_reach_the_ground():
     nodes = fulgur.charges([[0, 0, 6000, -40], [0, 0, 9000, 40]], [0, 0, 5800], seed=2,
                            step_m=20)

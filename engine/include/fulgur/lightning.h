@@ -35,6 +35,26 @@
  * are grown after the main channel, first-come first-grown, so the main
  * channel is nodes 0 .. main_nodes - 1, each flagged FG_NODE_MAIN.
  *
+ * The in-cloud channel (in_cloud_m >= segment_m; none by default): a
+ * cloud-to-ground flash also runs for kilometres horizontally inside the
+ * cloud. After the main channel and all its branches, a second channel is
+ * walked from the root (node 0) along a horizontal course of length
+ * L = in_cloud_m at the root's height toward in_cloud_azimuth_deg
+ * (counter-clockwise from +x), cut into the random skeleton's eight pieces
+ * with its joints jittered up to 0.08 L in x and in y and up to
+ * 0.04 min(L, root height) up or down, with the main channel's rules: the
+ * same turn law, lookahead and straight finish on the course's end, so its
+ * far end lies exactly L from the root horizontally, at the root's height,
+ * and the same branching (its branches are first order, grown last). It is
+ * not flagged FG_NODE_MAIN: the return stroke climbs the main channel and
+ * then runs out along it like a branch (so its sound arrives later), and
+ * the later strokes, which re-emit the main channel only, leave it out. It
+ * stops early at the ground, if it reaches it. Nothing of it is drawn when
+ * in_cloud_m is below segment_m (0 included), so the tree is then the one
+ * grown without the option, node for node; with it, that tree is kept as
+ * nodes 0 .. in_cloud_first - 1 and the in-cloud channel and its branches
+ * follow.
+ *
  * Designer thunder (Glassner part 2): features placed along the skeleton
  * (start and end as fractions of its length from the root) reshape it
  * before the walk:
@@ -93,6 +113,9 @@ typedef struct fg_lightning_config {
     size_t skeleton_points;     /* 2 .. FG_LIGHTNING_MAX_SKELETON when given */
     double strike_m[2];         /* random skeleton: x, y of the strike point (z = 0) */
     double height_m;            /* random skeleton: height of the root: 5000 */
+    double in_cloud_m;          /* horizontal course of the in-cloud channel from the
+                                   root, m: 0 (none; so is any length below segment_m) */
+    double in_cloud_azimuth_deg; /* its direction, counter-clockwise from +x: 0 */
     double segment_m;           /* walk step: 3 (2 l of the lightning preset) */
     double turn_mean_deg;       /* mean direction change per 3 m segment: 16; < 90;
                                    times sqrt(segment_m / 3) at another step */
@@ -124,6 +147,10 @@ typedef struct fg_lightning_report {
     size_t segments;          /* all nodes but the root */
     double main_length_m;     /* length of the main channel */
     double skeleton_length_m; /* length of the (reshaped) skeleton */
+    size_t in_cloud_first;    /* the in-cloud channel is nodes in_cloud_first ..
+                                 in_cloud_first + in_cloud_nodes - 1, root side first; */
+    size_t in_cloud_nodes;    /* 0 without one (in_cloud_first is then the node count) */
+    double in_cloud_length_m; /* its length along the channel */
     fg_lightning_stretch features[FG_THUNDER_MAX_FEATURES]; /* in the order given */
 } fg_lightning_report;
 
@@ -132,8 +159,8 @@ typedef struct fg_lightning_report {
  * Errors: FG_ERR_NULL in/out, or skeleton_m NULL with skeleton_points > 0,
  * or features NULL with feature_count > 0; FG_ERR_NOT_FINITE a NaN/inf number,
  * skeleton point or feature field; FG_ERR_ARGUMENT a negative length or
- * angle, turn_mean_deg >= 90, max_deviation_deg >= 180, branch_probability
- * > 1, branch_depth > 8, fewer than 2 or more than
+ * angle (in_cloud_azimuth_deg may be any finite angle), turn_mean_deg >= 90,
+ * max_deviation_deg >= 180, branch_probability > 1, branch_depth > 8, fewer than 2 or more than
  * FG_LIGHTNING_MAX_SKELETON skeleton points, a skeleton point below the
  * ground or the root on it, two consecutive skeleton points equal, more
  * than FG_THUNDER_MAX_FEATURES features, an unknown kind, a feature outside

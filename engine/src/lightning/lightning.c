@@ -35,6 +35,8 @@ typedef struct walker {
     size_t nspawn, spawn_cap;
     /* the turn law and the branching at segment_m (per_step) */
     double turn_rad, branch_p;
+    /* the in-cloud channel: nodes in_cloud_first .. in_cloud_end - 1 */
+    size_t in_cloud_first, in_cloud_end;
 } walker;
 
 /* The direction after one step of the turn law (see fulgur/lightning.h). */
@@ -98,16 +100,18 @@ static fg_vec3 ground_hit(fg_vec3 a, fg_vec3 b)
     return fg_v3_add(a, fg_v3_scale(fg_v3_sub(b, a), a.z / (a.z - b.z)));
 }
 
-static fg_result walk_main(walker *w)
+/* Walks skeleton k from node (already in the tree, at k's first point) to
+ * k's end or the ground, flagging its nodes with flags; designed: the
+ * designer features' stretches (of w->skel) apply. */
+static fg_result walk(walker *w, const fg_skeleton *k, size_t node, uint32_t flags, int designed)
 {
     const fg_lightning_config *p = w->p;
-    const fg_skeleton *k = w->skel;
     double step = p->segment_m, total = fg_skeleton_length(k);
     fg_vec3 listener = fg_v3(p->listener_m[0], p->listener_m[1], p->listener_m[2]);
     fg_vec3 end = k->p[k->n - 1], pos = k->p[0];
     fg_vec3 dir = fg_v3_unit(fg_v3_sub(fg_skeleton_at(k, p->lookahead_m), pos));
-    size_t node, hint = 0;
-    fg_result r = fg_tree_add(w->tree, pos.x, pos.y, pos.z, -1, FG_NODE_MAIN, &node);
+    size_t hint = 0;
+    fg_result r = FG_OK;
     for (size_t steps = 0; r == FG_OK; steps++) {
         if ((double)steps * step > WALK_LIMIT * total)
             return FG_ERR_UNREACHABLE;
@@ -117,12 +121,12 @@ static fg_result walk_main(walker *w)
             fg_vec3 from = pos;
             for (size_t i = 1; i <= pieces && r == FG_OK; i++) {
                 pos = fg_v3_add(from, fg_v3_scale(fg_v3_sub(end, from), (double)i / pieces));
-                r = add(w, pos, node, FG_NODE_MAIN, 0, dir, &node);
+                r = add(w, pos, node, flags, 0, dir, &node);
             }
             return r;
         }
         double s = fg_skeleton_project(k, pos, &hint);
-        int b = feature_at(w, s);
+        int b = designed ? feature_at(w, s) : -1;
         fg_thunder_kind f = b >= 0 ? p->features[b].kind : 0;
         double a = b >= 0 ? fg_thunder_amplitude(&p->features[b]) : 1;
         double mean = w->turn_rad * (f == FG_THUNDER_ROAR ? 1 + ROAR_GAIN * a : 1);
@@ -134,10 +138,34 @@ static fg_result walk_main(walker *w)
             dir = fg_v3_unit(fg_v3_sub(next, pos));
         }
         if (next.z <= 0)
-            return add(w, ground_hit(pos, next), node, FG_NODE_MAIN, 0, dir, &node);
-        r = add(w, next, node, FG_NODE_MAIN, 0, dir, &node);
+            return add(w, ground_hit(pos, next), node, flags, 0, dir, &node);
+        r = add(w, next, node, flags, 0, dir, &node);
         pos = next;
     }
+    return r;
+}
+
+static fg_result walk_main(walker *w)
+{
+    fg_vec3 root = w->skel->p[0];
+    size_t node;
+    fg_result r = fg_tree_add(w->tree, root.x, root.y, root.z, -1, FG_NODE_MAIN, &node);
+    return r == FG_OK ? walk(w, w->skel, node, FG_NODE_MAIN, 1) : r;
+}
+
+/* The in-cloud channel: from the root along a jittered horizontal course
+ * (see fulgur/lightning.h). */
+static fg_result walk_in_cloud(walker *w)
+{
+    const fg_lightning_config *p = w->p;
+    fg_vec3 root = w->skel->p[0];
+    double az = p->in_cloud_azimuth_deg * deg;
+    fg_vec3 far = fg_v3_add(root, fg_v3(p->in_cloud_m * cos(az), p->in_cloud_m * sin(az), 0));
+    fg_skeleton course = {0};
+    fg_result r = fg_skeleton_course(&course, &w->rng, root, far);
+    if (r == FG_OK)
+        r = walk(w, &course, 0, 0, 0);
+    fg_skeleton_free(&course);
     return r;
 }
 
@@ -170,7 +198,14 @@ static void fill_report(const walker *w, size_t main_nodes, fg_lightning_report 
     const fg_node *nodes = fg_tree_nodes(w->tree);
     *report = (fg_lightning_report){.main_nodes = main_nodes,
                                     .segments = fg_tree_count(w->tree) - 1,
-                                    .skeleton_length_m = fg_skeleton_length(w->skel)};
+                                    .skeleton_length_m = fg_skeleton_length(w->skel),
+                                    .in_cloud_first = w->in_cloud_first,
+                                    .in_cloud_nodes = w->in_cloud_end - w->in_cloud_first};
+    for (size_t i = w->in_cloud_first; i < w->in_cloud_end; i++) {
+        const fg_node *a = &nodes[i], *b = &nodes[a->parent];
+        report->in_cloud_length_m += fg_v3_len(fg_v3_sub(fg_v3(a->x, a->y, a->z),
+                                                         fg_v3(b->x, b->y, b->z)));
+    }
     for (size_t i = 0; i < w->p->feature_count; i++) {
         report->features[i].distance_m = w->stretches[i].radius_m;
         report->features[i].first_node = main_nodes; /* none yet */
@@ -211,7 +246,16 @@ static fg_result build(walker *w, fg_skeleton *base, fg_skeleton *shaped, fg_str
     w->stretches = stretches;
     if ((r = walk_main(w)) != FG_OK)
         return r;
-    for (size_t i = 0; i < w->nspawn && r == FG_OK; i++)
+    size_t i = 0;
+    for (; i < w->nspawn && r == FG_OK; i++)
+        r = grow_branch(w, w->spawns[i]);
+    w->in_cloud_first = w->in_cloud_end = fg_tree_count(w->tree);
+    if (r != FG_OK || p->in_cloud_m < p->segment_m) /* shorter than a step: none */
+        return r;
+    if ((r = walk_in_cloud(w)) != FG_OK)
+        return r;
+    w->in_cloud_end = fg_tree_count(w->tree);
+    for (; i < w->nspawn && r == FG_OK; i++)
         r = grow_branch(w, w->spawns[i]);
     return r;
 }

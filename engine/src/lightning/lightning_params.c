@@ -69,14 +69,16 @@ fg_result fg_lightning_config_resolve(const fg_lightning_config *in, fg_lightnin
     fg_lightning_config p = *in;
     if ((!p.skeleton_m && p.skeleton_points > 0) || (!p.features && p.feature_count > 0))
         return FG_ERR_NULL;
-    double nums[] = {p.strike_m[0], p.strike_m[1], p.height_m, p.segment_m, p.turn_mean_deg,
+    double nums[] = {p.strike_m[0], p.strike_m[1], p.height_m, p.in_cloud_m,
+                     p.in_cloud_azimuth_deg, p.segment_m, p.turn_mean_deg,
                      p.max_deviation_deg, p.lookahead_m, p.branch_probability,
                      p.branch_length_m, p.listener_m[0], p.listener_m[1], p.listener_m[2]};
     if (!finite_n(nums, sizeof nums / sizeof nums[0]))
         return FG_ERR_NOT_FINITE;
-    if (p.height_m < 0 || p.segment_m < 0 || p.turn_mean_deg < 0 || p.turn_mean_deg >= 90 ||
-        p.max_deviation_deg < 0 || p.max_deviation_deg >= 180 || p.lookahead_m < 0 ||
-        p.branch_probability > 1 || p.branch_length_m < 0 || p.branch_depth > MAX_BRANCH_DEPTH)
+    if (p.height_m < 0 || p.in_cloud_m < 0 || p.segment_m < 0 || p.turn_mean_deg < 0 ||
+        p.turn_mean_deg >= 90 || p.max_deviation_deg < 0 || p.max_deviation_deg >= 180 ||
+        p.lookahead_m < 0 || p.branch_probability > 1 || p.branch_length_m < 0 ||
+        p.branch_depth > MAX_BRANCH_DEPTH)
         return FG_ERR_ARGUMENT;
     fg_result r;
     if (p.skeleton_m && (r = check_skeleton(p.skeleton_m, p.skeleton_points)) != FG_OK)

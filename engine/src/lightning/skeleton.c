@@ -1,4 +1,6 @@
-/* Skeleton polylines: storage, arclength queries, the random skeleton. */
+/* Skeleton polylines: storage, arclength queries, the random skeleton and
+ * the in-cloud course. */
+#include <math.h>
 #include <stdlib.h>
 
 #include "fg_array.h"
@@ -80,19 +82,36 @@ double fg_skeleton_project(const fg_skeleton *k, fg_vec3 q, size_t *hint)
     return best_s;
 }
 
+/* Appends RANDOM_PIECES - 1 joints on the line from the skeleton's last
+ * point a to b, each moved up to 0.08 side in x and in y and 0.04 up
+ * either way, then b. */
+static fg_result jittered_pieces(fg_skeleton *k, fg_rng *rng, fg_vec3 a, fg_vec3 b,
+                                 double side, double up)
+{
+    fg_result r = FG_OK;
+    for (int j = 1; j < RANDOM_PIECES && r == FG_OK; j++) {
+        double w = (double)j / RANDOM_PIECES;
+        fg_vec3 q = fg_v3_add(a, fg_v3_scale(fg_v3_sub(b, a), w));
+        q.x += fg_rng_range(rng, -0.08, 0.08) * side;
+        q.y += fg_rng_range(rng, -0.08, 0.08) * side;
+        q.z += fg_rng_range(rng, -0.04, 0.04) * up;
+        r = fg_skeleton_push(k, q);
+    }
+    return r == FG_OK ? fg_skeleton_push(k, b) : r;
+}
+
 fg_result fg_skeleton_random(fg_skeleton *k, fg_rng *rng, double x, double y, double h)
 {
     fg_vec3 strike = fg_v3(x, y, 0);
     fg_vec3 root = fg_v3(x + fg_rng_range(rng, -0.2, 0.2) * h,
                          y + fg_rng_range(rng, -0.2, 0.2) * h, h);
     fg_result r = fg_skeleton_push(k, root);
-    for (int j = 1; j < RANDOM_PIECES && r == FG_OK; j++) {
-        double w = (double)j / RANDOM_PIECES;
-        fg_vec3 q = fg_v3_add(root, fg_v3_scale(fg_v3_sub(strike, root), w));
-        q.x += fg_rng_range(rng, -0.08, 0.08) * h;
-        q.y += fg_rng_range(rng, -0.08, 0.08) * h;
-        q.z += fg_rng_range(rng, -0.04, 0.04) * h;
-        r = fg_skeleton_push(k, q);
-    }
-    return r == FG_OK ? fg_skeleton_push(k, strike) : r;
+    return r == FG_OK ? jittered_pieces(k, rng, root, strike, h, h) : r;
+}
+
+fg_result fg_skeleton_course(fg_skeleton *k, fg_rng *rng, fg_vec3 from, fg_vec3 to)
+{
+    double length = fg_v3_len(fg_v3_sub(to, from));
+    fg_result r = fg_skeleton_push(k, from);
+    return r == FG_OK ? jittered_pieces(k, rng, from, to, length, fmin(length, from.z)) : r;
 }

@@ -35,4 +35,9 @@ double fg_skeleton_project(const fg_skeleton *k, fg_vec3 q, size_t *hint);
  * jitter of up to 0.08 h and height jitter of up to 0.04 h. */
 fg_result fg_skeleton_random(fg_skeleton *k, fg_rng *rng, double x, double y, double h);
 
+/* A course from `from` to `to` (of length L) with the random skeleton's
+ * pieces: seven joints jittered up to 0.08 L in x and in y and
+ * 0.04 min(L, from.z) up or down (so never below 0.96 from.z). */
+fg_result fg_skeleton_course(fg_skeleton *k, fg_rng *rng, fg_vec3 from, fg_vec3 to);
+
 #endif
