@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hrir_equalize.h"
 #include "sofa_hrir.h"
 
 void sofa_hrirs_free(sofa_hrirs *h)
@@ -209,6 +210,8 @@ int sofa_hrirs_read(const char *path, double rate_hz, sofa_hrirs *out, char *err
     }
     mysofa_tocartesian(hrtf);
     int rc = take(hrtf, rate_hz, out, why, sizeof why);
+    if (rc == 0)
+        rc = hrir_equalize(&out->set, out->left, out->right, out->file_rate_hz, why, sizeof why);
     mysofa_free(hrtf);
     if (rc != 0) {
         snprintf(err, err_size, "%s: %s", path, why);

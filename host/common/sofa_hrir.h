@@ -24,7 +24,8 @@ typedef struct sofa_hrirs {
     double file_rate_hz; /* the file's own rate */
 } sofa_hrirs;
 
-/* Reads path's responses at rate_hz into *out. Returns 0, or -1 with a
+/* Reads path's responses at rate_hz into *out, diffuse-field equalized
+ * with a flat low end (hrir_equalize.h). Returns 0, or -1 with a
  * message naming path and what is wrong in err: missing or unreadable, not
  * a SOFA file, not a valid SimpleFreeFieldHRIR set (libmysofa's check),
  * not two receivers (ears, dimension R), fewer than 16 measurements (M),
