@@ -144,12 +144,12 @@ static size_t nearest(const double u[3], double *angle_deg)
 }
 
 /* A spark 1 m from the head in the head-frame direction u (x ahead, y
- * left, z up), rendered binaurally. The head stands at (0, 0, 1.7)
- * looking along +y (world x is to its right). */
-static void render_spark(const double u[3], float *left, float *right)
+ * left, z up), rendered by an engine of cfg's layout into planes. The head
+ * stands at (0, 0, 1.7) looking along +y (world x is to its right). */
+static void render_at(const double u[3], fg_engine_config cfg, float *const *planes)
 {
-    fg_engine_config cfg = {.sample_rate_hz = FS, .max_block_frames = 256,
-                            .layout = FG_LAYOUT_BINAURAL, .hrirs = &kemar.set};
+    cfg.sample_rate_hz = FS;
+    cfg.max_block_frames = 256;
     fg_engine *e;
     assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
     fg_listener head = {.position = {0, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
@@ -160,27 +160,22 @@ static void render_spark(const double u[3], float *left, float *right)
     assert_int_equal(fg_preset_sound(FG_PRESET_SPARK_BALLS, &d.sound), FG_OK);
     d.sound.t0_jitter = 0;
     assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
-    fx_render(e, (float *[]){left, right}, 2, FRAMES, 256);
+    fx_render(e, planes, cfg.layout == FG_LAYOUT_BINAURAL ? 2 : cfg.channels, FRAMES, 256);
     fg_engine_destroy(e);
+}
+
+/* The spark heard binaurally. */
+static void render_spark(const double u[3], float *left, float *right)
+{
+    render_at(u, (fg_engine_config){.layout = FG_LAYOUT_BINAURAL, .hrirs = &kemar.set},
+              (float *[]){left, right});
 }
 
 /* The same spark heard by one ear at the head's centre (the stereo layout
  * of one channel): what the binaural layout pans to its loudspeakers. */
 static void render_centre(const double u[3], float *mono)
 {
-    fg_engine_config cfg = {.sample_rate_hz = FS, .max_block_frames = 256, .channels = 1};
-    fg_engine *e;
-    assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
-    fg_listener head = {.position = {0, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
-    assert_int_equal(fg_engine_set_listener(e, &head), FG_OK);
-    fg_node nodes[2];
-    fx_segment(nodes, (double[]){-u[1], u[0], 1.7 + u[2]}, (double[]){0, 0, 1}, 1e-3);
-    fg_discharge d = {.nodes = nodes, .node_count = 2, .strokes = 1, .seed = 3};
-    assert_int_equal(fg_preset_sound(FG_PRESET_SPARK_BALLS, &d.sound), FG_OK);
-    d.sound.t0_jitter = 0;
-    assert_int_equal(fg_engine_post(e, &d, NULL), FG_OK);
-    fx_render(e, (float *[]){mono}, 1, FRAMES, 256);
-    fg_engine_destroy(e);
+    render_at(u, (fg_engine_config){.channels = 1}, (float *[]){mono});
 }
 
 /* out[0..FRAMES) = x * h, h of n taps. */
