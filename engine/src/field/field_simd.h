@@ -70,6 +70,11 @@ static inline fg_vd fg_vd_load(const double *p)
     return v;
 }
 
+static inline void fg_vd_store(double *p, fg_vd v)
+{
+    memcpy(p, &v, sizeof v);
+}
+
 static inline fg_vd fg_vd_set(double x)
 {
     return (fg_vd){x, x};
@@ -135,6 +140,11 @@ static inline fg_vi fg_vi_colour(int parity)
 static inline fg_vd fg_vd_load(const double *p)
 {
     return *p;
+}
+
+static inline void fg_vd_store(double *p, fg_vd v)
+{
+    *p = v;
 }
 
 static inline fg_vd fg_vd_set(double x)

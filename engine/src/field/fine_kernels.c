@@ -19,7 +19,7 @@ typedef struct fine_row {
     float scale;               /* fg_row's */
 } fine_row;
 
-static fine_row row_of(const fg_level *L, int j, int k)
+static inline fine_row row_of(const fg_level *L, int j, int k)
 {
     fg_row r = fg_level_row(L, j, k);
     fine_row f;
@@ -67,7 +67,7 @@ typedef struct half {
     int lo, hi;
 } half;
 
-static half half_of(const fine_row *f, int h)
+static inline half half_of(const fine_row *f, int h)
 {
     int no = f->n / 2;
     half s;

@@ -110,14 +110,61 @@ static double b_row(const fg_level *L, const double *x, const fg_row *r)
     return sum;
 }
 
+/* The residual rows of plane k; returns their squared norm. */
+static double residual_plane(const fg_level *L, const double *phi, int zero_free, int k,
+                             float *out)
+{
+    double sum = 0.0;
+    for (int j = 0; j < L->n[1]; j++) {
+        fg_row r = fg_level_row(L, j, k);
+        sum += zero_free ? b_row(L, phi, &r) : residual_row(L, phi, &r, out);
+    }
+    return sum;
+}
+
 double fg_lap_residual(const fg_level *L, const double *phi, int zero_free, float *out)
 {
     double sum = 0.0;
     for (int k = 0; k < L->n[2]; k++)
-        for (int j = 0; j < L->n[1]; j++) {
-            fg_row r = fg_level_row(L, j, k);
-            sum += zero_free ? b_row(L, phi, &r) : residual_row(L, phi, &r, out);
+        sum += residual_plane(L, phi, zero_free, k, out);
+    return sum;
+}
+
+/* phi += e (split rows) on the free nodes of plane k, a block of lanes at
+ * a time in the natural order; the Dirichlet nodes keep their values. */
+static void correct_plane(const fg_level *L, double *phi, const float *e, int k)
+{
+    const int n = L->n[0];
+    for (int j = 0; j < L->n[1]; j++) {
+        size_t row = fg_level_index(L, 0, j, k);
+        double *x = phi + row;
+        const uint8_t *m = L->mask + row;
+        const float *er = e + row;
+        int i = 0;
+        for (; i + FG_VD_LANES <= n; i += FG_VD_LANES) {
+            double t[FG_VD_LANES];
+            for (int l = 0; l < FG_VD_LANES; l++)
+                t[l] = er[fg_split(n, i + l)];
+            fg_vd v = fg_vd_load(x + i);
+            fg_vd_store(x + i, fg_vd_select(fg_vl_zero_bytes(m + i), v + fg_vd_load(t), v));
         }
+        for (; i < n; i++)
+            if (!m[i])
+                x[i] += er[fg_split(n, i)];
+    }
+}
+
+/* A plane's residual reads the planes either side: the one above is
+ * corrected just before, so that phi is read once while in cache. */
+double fg_lap_correct_residual(const fg_level *L, double *phi, const float *e, float *out)
+{
+    double sum = 0.0;
+    correct_plane(L, phi, e, 0);
+    for (int k = 0; k < L->n[2]; k++) {
+        if (k + 1 < L->n[2])
+            correct_plane(L, phi, e, k + 1);
+        sum += residual_plane(L, phi, 0, k, out);
+    }
     return sum;
 }
 
