@@ -97,6 +97,13 @@ static inline double fg_vd_lane(fg_vd v, int l)
     return v[l];
 }
 
+/* v with lane l set to x (in a register, no store and reload). */
+static inline fg_vd fg_vd_with(fg_vd v, int l, double x)
+{
+    v[l] = x;
+    return v;
+}
+
 #else
 
 #define FG_VF_LANES 1
@@ -166,6 +173,13 @@ static inline double fg_vd_lane(fg_vd v, int l)
 {
     (void)l;
     return v;
+}
+
+static inline fg_vd fg_vd_with(fg_vd v, int l, double x)
+{
+    (void)v;
+    (void)l;
+    return x;
 }
 
 #endif

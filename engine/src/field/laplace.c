@@ -142,11 +142,11 @@ static void correct_plane(const fg_level *L, double *phi, const float *e, int k)
         const float *er = e + row;
         int i = 0;
         for (; i + FG_VD_LANES <= n; i += FG_VD_LANES) {
-            double t[FG_VD_LANES];
+            fg_vd c = fg_vd_set(0.0);
             for (int l = 0; l < FG_VD_LANES; l++)
-                t[l] = er[fg_split(n, i + l)];
+                c = fg_vd_with(c, l, er[fg_split(n, i + l)]);
             fg_vd v = fg_vd_load(x + i);
-            fg_vd_store(x + i, fg_vd_select(fg_vl_zero_bytes(m + i), v + fg_vd_load(t), v));
+            fg_vd_store(x + i, fg_vd_select(fg_vl_zero_bytes(m + i), v + c, v));
         }
         for (; i < n; i++)
             if (!m[i])
