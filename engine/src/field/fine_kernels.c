@@ -17,6 +17,8 @@ typedef struct fine_row {
     size_t at;                 /* index of the row's first node */
     ptrdiff_t south, north, down, up;
     float scale;               /* fg_row's */
+    float unscale;             /* 1 / scale, a power of two: multiplying by it
+                                  is dividing by scale exactly */
 } fine_row;
 
 static inline fine_row row_of(const fg_level *L, int j, int k)
@@ -35,6 +37,7 @@ static inline fine_row row_of(const fg_level *L, int j, int k)
     f.down = r.down;
     f.up = r.up;
     f.scale = (float)r.scale;
+    f.unscale = 1.0f / f.scale;
     return f;
 }
 
@@ -80,12 +83,18 @@ static inline half half_of(const fine_row *f, int h)
     return s;
 }
 
+/* 1 / scale_at, exactly. */
+static inline float unscale_at(const fine_row *f, int i)
+{
+    return i == 0 || i == f->n - 1 ? 2.0f * f->unscale : f->unscale;
+}
+
 /* inv (rhs / scale + neighbours) at node i, one node. */
 static inline float relaxed(const fg_level *L, const fine_row *f, const float *x,
                             const float *rhs, int i)
 {
     size_t id = f->at + fg_split(f->n, i);
-    float b = rhs ? rhs[id] / scale_at(f, i) : 0.0f;
+    float b = rhs ? rhs[id] * unscale_at(f, i) : 0.0f;
     return L->inv_diag[id] * (b + neighbours(f, x, i));
 }
 
@@ -118,7 +127,7 @@ void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color)
             const float *o = e + f.at + s.other + s.west;
             const float *inv = L->inv_diag + f.at + s.first;
             const fg_vf cx = fg_vf_set(f.cx), cy = fg_vf_set(f.cy), cz = fg_vf_set(f.cz),
-                        up = fg_vf_set(1.0f / f.scale);
+                        up = fg_vf_set(f.unscale);
             for (int t = s.lo; t + FG_VF_LANES <= s.hi; t = next_block(&s, t)) {
                 fg_vf v = cx * (fg_vf_load(o + t) + fg_vf_load(o + t + 1)) +
                           cy * (fg_vf_load(x + f.south + t) + fg_vf_load(x + f.north + t)) +
@@ -142,17 +151,18 @@ void fg_fine_sweep_from_zero(const fg_level *L, float *e, const float *rhs)
             const half s = half_of(&f, (j + k) & 1), other = half_of(&f, (j + k + 1) & 1);
             float *x = e + f.at + s.first;
             const float *b = rhs + f.at + s.first, *inv = L->inv_diag + f.at + s.first;
-            const fg_vf up = fg_vf_set(1.0f / f.scale);
+            const fg_vf up = fg_vf_set(f.unscale);
             int t = 0;
             for (; t + FG_VF_LANES <= s.count; t += FG_VF_LANES)
                 fg_vf_store(x + t, fg_vf_load(inv + t) * (fg_vf_load(b + t) * up));
             for (; t < s.count; t++)
-                x[t] = inv[t] * (b[t] / f.scale);
+                x[t] = inv[t] * (b[t] * f.unscale);
             /* A row's end nodes have their right-hand side doubled again. */
             int ends[2] = {0, f.n - 1};
             for (int a = 0; a < 2; a++)
                 if ((ends[a] & 1) == ((j + k) & 1))
-                    x[ends[a] / 2] = inv[ends[a] / 2] * (b[ends[a] / 2] / scale_at(&f, ends[a]));
+                    x[ends[a] / 2] =
+                        inv[ends[a] / 2] * (b[ends[a] / 2] * unscale_at(&f, ends[a]));
             memset(e + f.at + other.first, 0, (size_t)other.count * sizeof *e);
         }
 }
