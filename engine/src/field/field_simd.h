@@ -70,11 +70,6 @@ static inline fg_vd fg_vd_load(const double *p)
     return v;
 }
 
-static inline void fg_vd_store(double *p, fg_vd v)
-{
-    memcpy(p, &v, sizeof v);
-}
-
 static inline fg_vd fg_vd_set(double x)
 {
     return (fg_vd){x, x};
@@ -95,13 +90,6 @@ static inline fg_vl fg_vl_zero_bytes(const uint8_t *m)
 static inline double fg_vd_lane(fg_vd v, int l)
 {
     return v[l];
-}
-
-/* v with lane l set to x (in a register, no store and reload). */
-static inline fg_vd fg_vd_with(fg_vd v, int l, double x)
-{
-    v[l] = x;
-    return v;
 }
 
 #else
@@ -149,11 +137,6 @@ static inline fg_vd fg_vd_load(const double *p)
     return *p;
 }
 
-static inline void fg_vd_store(double *p, fg_vd v)
-{
-    *p = v;
-}
-
 static inline fg_vd fg_vd_set(double x)
 {
     return x;
@@ -173,13 +156,6 @@ static inline double fg_vd_lane(fg_vd v, int l)
 {
     (void)l;
     return v;
-}
-
-static inline fg_vd fg_vd_with(fg_vd v, int l, double x)
-{
-    (void)v;
-    (void)l;
-    return x;
 }
 
 #endif

@@ -160,27 +160,22 @@ double fg_lap_residual(const fg_level *L, const double *phi, int zero_free, floa
     return sum;
 }
 
-/* phi += e (split rows) on the free nodes of plane k, a block of lanes at
- * a time in the natural order; the Dirichlet nodes keep their values. */
+/* phi += e (split rows) on the free nodes of plane k, a row's even nodes
+ * and then its odd ones; the Dirichlet nodes keep their values. */
 static void correct_plane(const fg_level *L, double *phi, const float *e, int k)
 {
-    const int n = L->n[0];
+    const size_t n = (size_t)L->n[0], ne = (n + 1) / 2;
     for (int j = 0; j < L->n[1]; j++) {
         size_t row = fg_level_index(L, 0, j, k);
         double *x = phi + row;
         const uint8_t *m = L->mask + row;
-        const float *er = e + row;
-        int i = 0;
-        for (; i + FG_VD_LANES <= n; i += FG_VD_LANES) {
-            fg_vd c = fg_vd_set(0.0);
-            for (int l = 0; l < FG_VD_LANES; l++)
-                c = fg_vd_with(c, l, er[fg_split(n, i + l)]);
-            fg_vd v = fg_vd_load(x + i);
-            fg_vd_store(x + i, fg_vd_select(fg_vl_zero_bytes(m + i), v + c, v));
-        }
-        for (; i < n; i++)
-            if (!m[i])
-                x[i] += er[fg_split(n, i)];
+        const float *even = e + row, *odd = e + row + ne;
+        for (size_t u = 0; u < ne; u++)
+            if (!m[2 * u])
+                x[2 * u] += even[u];
+        for (size_t u = 0; u < n / 2; u++)
+            if (!m[2 * u + 1])
+                x[2 * u + 1] += odd[u];
     }
 }
 
