@@ -126,7 +126,7 @@ void fg_lap_relax_box(const fg_level *L, double *phi, int i, int j, int k, int r
  * nodes). */
 /* e = the first red half-sweep from e = 0 (black nodes 0). */
 void fg_fine_sweep_from_zero(const fg_level *L, float *e, const float *rhs);
-/* One Gauss-Seidel half-sweep over the nodes of one colour. */
+/* One Gauss-Seidel half-sweep over the nodes of one colour (rhs not NULL). */
 void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color);
 /* out = rhs - A x on free nodes (rhs NULL: zero), 0 on Dirichlet nodes. */
 void fg_fine_residual(const fg_level *L, const float *x, const float *rhs, float *out);
