@@ -88,12 +88,15 @@ void fg_multigrid_assemble(fg_field *f)
 {
     fg_level *L = &f->level[0];
     const float inv = (float)(1.0 / (2.0 * (L->c[0] + L->c[1] + L->c[2])));
-    for (int k = 0; k < L->n[2]; k++)
-        for (int j = 0; j < L->n[1]; j++) {
-            size_t row = fg_level_index(L, 0, j, k);
-            for (int i = 0; i < L->n[0]; i++)
-                L->inv_diag[row + fg_split(L->n[0], i)] = L->mask[row + (size_t)i] ? 0.0f : inv;
-        }
+    const int n = L->n[0], ne = (n + 1) / 2;
+    for (size_t row = 0; row < L->count; row += (size_t)n) {
+        const uint8_t *m = L->mask + row;
+        float *even = L->inv_diag + row, *odd = even + ne;
+        for (int u = 0; u < ne; u++)
+            even[u] = m[2 * u] ? 0.0f : inv;
+        for (int u = 0; u < n / 2; u++)
+            odd[u] = m[2 * u + 1] ? 0.0f : inv;
+    }
     for (int l = 1; l < f->levels; l++)
         assemble_level(&f->level[0], &f->level[l], 1 << l);
     f->operators_dirty = 0;

@@ -110,6 +110,9 @@ static inline fg_row fg_level_row(const fg_level *L, int j, int k)
  * its squared norm. zero_free: read phi as 0 on free nodes (the residual is
  * then b). */
 double fg_lap_residual(const fg_level *L, const double *phi, int zero_free, float *out);
+/* phi += e (a correction in split rows) on the free nodes, then
+ * fg_lap_residual(L, phi, 0, out), in one pass over phi. */
+double fg_lap_correct_residual(const fg_level *L, double *phi, const float *e, float *out);
 /* One over-relaxed Gauss-Seidel half-sweep over the nodes of one colour
  * ((i + j + k) % 2 == color) for A phi = 0. omega = 1 is plain
  * Gauss-Seidel. */
@@ -123,7 +126,7 @@ void fg_lap_relax_box(const fg_level *L, double *phi, int i, int j, int k, int r
  * nodes). */
 /* e = the first red half-sweep from e = 0 (black nodes 0). */
 void fg_fine_sweep_from_zero(const fg_level *L, float *e, const float *rhs);
-/* One Gauss-Seidel half-sweep over the nodes of one colour. */
+/* One Gauss-Seidel half-sweep over the nodes of one colour (rhs not NULL). */
 void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color);
 /* out = rhs - A x on free nodes (rhs NULL: zero), 0 on Dirichlet nodes. */
 void fg_fine_residual(const fg_level *L, const float *x, const float *rhs, float *out);

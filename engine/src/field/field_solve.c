@@ -51,23 +51,10 @@ double fg_field_residual(fg_field *f)
     return sqrt(fg_lap_residual(&f->level[0], f->phi, 0, f->r)) / fg_field_b_norm(f);
 }
 
-/* phi += e (split rows) on the free nodes, a row's even nodes and then its
- * odd ones. */
-static void add_correction(fg_field *f, const float *e)
+/* phi += e, and the new residual (as fg_field_residual). */
+static double correct(fg_field *f, const float *e)
 {
-    const fg_level *L = &f->level[0];
-    const size_t n = (size_t)L->n[0], ne = (n + 1) / 2;
-    for (size_t row = 0; row < L->count; row += n) {
-        double *phi = f->phi + row;
-        const uint8_t *m = L->mask + row;
-        const float *even = e + row, *odd = e + row + ne;
-        for (size_t u = 0; u < ne; u++)
-            if (!m[2 * u])
-                phi[2 * u] += even[u];
-        for (size_t u = 0; u < n / 2; u++)
-            if (!m[2 * u + 1])
-                phi[2 * u + 1] += odd[u];
-    }
+    return sqrt(fg_lap_correct_residual(&f->level[0], f->phi, e, f->r)) / fg_field_b_norm(f);
 }
 
 static double dot(const float *a, const float *b, size_t n)
@@ -81,8 +68,7 @@ static double dot(const float *a, const float *b, size_t n)
 double fg_field_vcycle(fg_field *f)
 {
     fg_multigrid_cycle(f, f->r, f->z);
-    add_correction(f, f->z);
-    return fg_field_residual(f);
+    return correct(f, f->z);
 }
 
 /* Conjugate gradient for A x = r from x = 0, preconditioned by the cycle,
@@ -142,10 +128,9 @@ static fg_result multigrid(fg_field *f, double tol, int max_it, double rr, fg_so
             int done = cg(f, reduce, max_it - rep->iterations);
             if (done == 0)
                 break;
-            add_correction(f, f->x);
             rep->iterations += done;
             rep->cg_iterations += done;
-            next = fg_field_residual(f);
+            next = correct(f, f->x);
         }
         res = next;
     }

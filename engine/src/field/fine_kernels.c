@@ -17,9 +17,11 @@ typedef struct fine_row {
     size_t at;                 /* index of the row's first node */
     ptrdiff_t south, north, down, up;
     float scale;               /* fg_row's */
+    float unscale;             /* 1 / scale, a power of two: multiplying by it
+                                  is dividing by scale exactly */
 } fine_row;
 
-static fine_row row_of(const fg_level *L, int j, int k)
+static inline fine_row row_of(const fg_level *L, int j, int k)
 {
     fg_row r = fg_level_row(L, j, k);
     fine_row f;
@@ -35,6 +37,7 @@ static fine_row row_of(const fg_level *L, int j, int k)
     f.down = r.down;
     f.up = r.up;
     f.scale = (float)r.scale;
+    f.unscale = 1.0f / f.scale;
     return f;
 }
 
@@ -67,7 +70,7 @@ typedef struct half {
     int lo, hi;
 } half;
 
-static half half_of(const fine_row *f, int h)
+static inline half half_of(const fine_row *f, int h)
 {
     int no = f->n / 2;
     half s;
@@ -80,24 +83,30 @@ static half half_of(const fine_row *f, int h)
     return s;
 }
 
+/* 1 / scale_at, exactly. */
+static inline float unscale_at(const fine_row *f, int i)
+{
+    return i == 0 || i == f->n - 1 ? 2.0f * f->unscale : f->unscale;
+}
+
 /* inv (rhs / scale + neighbours) at node i, one node. */
 static inline float relaxed(const fg_level *L, const fine_row *f, const float *x,
                             const float *rhs, int i)
 {
     size_t id = f->at + fg_split(f->n, i);
-    float b = rhs ? rhs[id] / scale_at(f, i) : 0.0f;
+    float b = rhs[id] * unscale_at(f, i);
     return L->inv_diag[id] * (b + neighbours(f, x, i));
 }
 
 /* The blocks of lanes over [lo, hi) that the vector loops take: from lo
- * a block at a time, the last one moved back to end at hi, so that it
- * overlaps the one before. A half-sweep may do that, since it reads only
- * the other colour, and so may the residual, which writes elsewhere. The
- * block after the one at t: */
-static inline int next_block(const half *s, int t)
+ * a block at a time, and where a part of a block is left, one more moved
+ * back to end at hi, so that it overlaps the one before. A half-sweep may
+ * do that, since it reads only the other colour, and so may the residual,
+ * which writes elsewhere. Whether that last block is due once the whole
+ * ones end at t: */
+static inline int part_left(const half *s, int t)
 {
-    int next = t + FG_VF_LANES;
-    return next < s->hi && next + FG_VF_LANES > s->hi ? s->hi - FG_VF_LANES : next;
+    return t < s->hi && s->hi - s->lo >= FG_VF_LANES;
 }
 
 /* Where the scalar nodes after the blocks start: hi, or lo when [lo, hi)
@@ -105,6 +114,23 @@ static inline int next_block(const half *s, int t)
 static inline int after_blocks(const half *s)
 {
     return s->hi - s->lo >= FG_VF_LANES ? s->hi : s->lo;
+}
+
+/* One half-row of a half-sweep: its nodes, the other half's (at the west
+ * neighbour of its first node), the rows around, rhs and inv_diag. */
+typedef struct sweep_run {
+    float *x;
+    const float *o, *s, *n, *d, *u, *b, *inv;
+    fg_vf cx, cy, cz, up;
+} sweep_run;
+
+static inline void sweep_block(const sweep_run *r, int t)
+{
+    fg_vf v = r->cx * (fg_vf_load(r->o + t) + fg_vf_load(r->o + t + 1)) +
+              r->cy * (fg_vf_load(r->s + t) + fg_vf_load(r->n + t)) +
+              r->cz * (fg_vf_load(r->d + t) + fg_vf_load(r->u + t));
+    v += fg_vf_load(r->b + t) * r->up;
+    fg_vf_store(r->x + t, fg_vf_load(r->inv + t) * v);
 }
 
 void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color)
@@ -115,18 +141,23 @@ void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color)
             const int h = (color + j + k) & 1;
             const half s = half_of(&f, h);
             float *x = e + f.at + s.first;
-            const float *o = e + f.at + s.other + s.west;
-            const float *inv = L->inv_diag + f.at + s.first;
-            const fg_vf cx = fg_vf_set(f.cx), cy = fg_vf_set(f.cy), cz = fg_vf_set(f.cz),
-                        up = fg_vf_set(1.0f / f.scale);
-            for (int t = s.lo; t + FG_VF_LANES <= s.hi; t = next_block(&s, t)) {
-                fg_vf v = cx * (fg_vf_load(o + t) + fg_vf_load(o + t + 1)) +
-                          cy * (fg_vf_load(x + f.south + t) + fg_vf_load(x + f.north + t)) +
-                          cz * (fg_vf_load(x + f.down + t) + fg_vf_load(x + f.up + t));
-                if (rhs)
-                    v += fg_vf_load(rhs + f.at + s.first + t) * up;
-                fg_vf_store(x + t, fg_vf_load(inv + t) * v);
-            }
+            const sweep_run r = {x,
+                                 e + f.at + s.other + s.west,
+                                 x + f.south,
+                                 x + f.north,
+                                 x + f.down,
+                                 x + f.up,
+                                 rhs + f.at + s.first,
+                                 L->inv_diag + f.at + s.first,
+                                 fg_vf_set(f.cx),
+                                 fg_vf_set(f.cy),
+                                 fg_vf_set(f.cz),
+                                 fg_vf_set(f.unscale)};
+            int t = s.lo;
+            for (; t + FG_VF_LANES <= s.hi; t += FG_VF_LANES)
+                sweep_block(&r, t);
+            if (part_left(&s, t))
+                sweep_block(&r, s.hi - FG_VF_LANES);
             for (int u = 0; u < s.lo; u++)
                 x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
             for (int u = after_blocks(&s); u < s.count; u++)
@@ -142,17 +173,18 @@ void fg_fine_sweep_from_zero(const fg_level *L, float *e, const float *rhs)
             const half s = half_of(&f, (j + k) & 1), other = half_of(&f, (j + k + 1) & 1);
             float *x = e + f.at + s.first;
             const float *b = rhs + f.at + s.first, *inv = L->inv_diag + f.at + s.first;
-            const fg_vf up = fg_vf_set(1.0f / f.scale);
+            const fg_vf up = fg_vf_set(f.unscale);
             int t = 0;
             for (; t + FG_VF_LANES <= s.count; t += FG_VF_LANES)
                 fg_vf_store(x + t, fg_vf_load(inv + t) * (fg_vf_load(b + t) * up));
             for (; t < s.count; t++)
-                x[t] = inv[t] * (b[t] / f.scale);
+                x[t] = inv[t] * (b[t] * f.unscale);
             /* A row's end nodes have their right-hand side doubled again. */
             int ends[2] = {0, f.n - 1};
             for (int a = 0; a < 2; a++)
                 if ((ends[a] & 1) == ((j + k) & 1))
-                    x[ends[a] / 2] = inv[ends[a] / 2] * (b[ends[a] / 2] / scale_at(&f, ends[a]));
+                    x[ends[a] / 2] =
+                        inv[ends[a] / 2] * (b[ends[a] / 2] * unscale_at(&f, ends[a]));
             memset(e + f.at + other.first, 0, (size_t)other.count * sizeof *e);
         }
 }
@@ -169,27 +201,54 @@ static inline float residual_at(const fine_row *f, const float *x, const float *
     return inv[u] != 0.0f ? v : 0.0f;
 }
 
+/* One half-row of fg_fine_residual, as sweep_run; b may be NULL. */
+typedef struct residual_run {
+    float *res;
+    const float *x, *o, *s, *n, *d, *u, *b, *inv;
+    fg_vf cx, cy, cz, dg, scale;
+} residual_run;
+
+static inline void residual_block(const residual_run *r, int t)
+{
+    const fg_vf zero = fg_vf_set(0.0f);
+    fg_vf v = r->cx * (fg_vf_load(r->o + t) + fg_vf_load(r->o + t + 1)) +
+              r->cy * (fg_vf_load(r->s + t) + fg_vf_load(r->n + t)) +
+              r->cz * (fg_vf_load(r->d + t) + fg_vf_load(r->u + t));
+    v = (v - r->dg * fg_vf_load(r->x + t)) * r->scale;
+    if (r->b)
+        v += fg_vf_load(r->b + t);
+    fg_vf_store(r->res + t, fg_vf_select(fg_vf_load(r->inv + t) != zero, v, zero));
+}
+
 void fg_fine_residual(const fg_level *L, const float *x, const float *rhs, float *out)
 {
     for (int k = 0; k < L->n[2]; k++)
         for (int j = 0; j < L->n[1]; j++) {
             const fine_row f = row_of(L, j, k);
-            const fg_vf cx = fg_vf_set(f.cx), cy = fg_vf_set(f.cy), cz = fg_vf_set(f.cz),
-                        dg = fg_vf_set(f.dg), scale = fg_vf_set(f.scale), zero = fg_vf_set(0.0f);
             for (int h = 0; h < 2; h++) {
                 const half s = half_of(&f, h);
-                const float *xr = x + f.at + s.first, *o = x + f.at + s.other + s.west;
+                const float *xr = x + f.at + s.first;
                 const float *inv = L->inv_diag + f.at + s.first;
                 float *res = out + f.at + s.first;
-                for (int t = s.lo; t + FG_VF_LANES <= s.hi; t = next_block(&s, t)) {
-                    fg_vf v = cx * (fg_vf_load(o + t) + fg_vf_load(o + t + 1)) +
-                              cy * (fg_vf_load(xr + f.south + t) + fg_vf_load(xr + f.north + t)) +
-                              cz * (fg_vf_load(xr + f.down + t) + fg_vf_load(xr + f.up + t));
-                    v = (v - dg * fg_vf_load(xr + t)) * scale;
-                    if (rhs)
-                        v += fg_vf_load(rhs + f.at + s.first + t);
-                    fg_vf_store(res + t, fg_vf_select(fg_vf_load(inv + t) != zero, v, zero));
-                }
+                const residual_run r = {res,
+                                        xr,
+                                        x + f.at + s.other + s.west,
+                                        xr + f.south,
+                                        xr + f.north,
+                                        xr + f.down,
+                                        xr + f.up,
+                                        rhs ? rhs + f.at + s.first : NULL,
+                                        inv,
+                                        fg_vf_set(f.cx),
+                                        fg_vf_set(f.cy),
+                                        fg_vf_set(f.cz),
+                                        fg_vf_set(f.dg),
+                                        fg_vf_set(f.scale)};
+                int t = s.lo;
+                for (; t + FG_VF_LANES <= s.hi; t += FG_VF_LANES)
+                    residual_block(&r, t);
+                if (part_left(&s, t))
+                    residual_block(&r, s.hi - FG_VF_LANES);
                 for (int u = 0; u < s.lo; u++)
                     res[u] = residual_at(&f, x, rhs, s.first, inv, u, h);
                 for (int u = after_blocks(&s); u < s.count; u++)

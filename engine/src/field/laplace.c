@@ -55,32 +55,62 @@ static double scalar_residuals(const fg_level *L, const double *xr, const fg_row
     return sum;
 }
 
-/* One row of fg_lap_residual with phi as it is; returns the squared norm. */
+/* A row of phi and its neighbour rows, for residual_row's blocks. */
+typedef struct row_view {
+    const double *x, *s, *n, *d, *u;
+    const uint8_t *m;
+    fg_vd cx, cy, cz, dg, scale;
+    float *out;       /* the row's residual (split), or NULL */
+    int size;
+} row_view;
+
+/* The residual at the block of lanes from node i, stored in out; returns
+ * its square. */
+static inline fg_vd residual_block(const row_view *w, int i)
+{
+    fg_vd v = w->cx * (fg_vd_load(w->x + i - 1) + fg_vd_load(w->x + i + 1)) +
+              w->cy * (fg_vd_load(w->s + i) + fg_vd_load(w->n + i)) +
+              w->cz * (fg_vd_load(w->d + i) + fg_vd_load(w->u + i)) - w->dg * fg_vd_load(w->x + i);
+    v = fg_vd_select(fg_vl_zero_bytes(w->m + i), v * w->scale, fg_vd_set(0.0));
+    if (w->out)
+        for (int l = 0; l < FG_VD_LANES; l++)
+            w->out[fg_split(w->size, i + l)] = (float)fg_vd_lane(v, l);
+    return v * v;
+}
+
+/* One row of fg_lap_residual with phi as it is; returns the squared norm.
+ * Two blocks a step, summed apart, so that the additions do not wait on
+ * each other. */
 static double residual_row(const fg_level *L, const double *x, const fg_row *r, float *out)
 {
     const int n = L->n[0];
     const double *xr = x + r->at;
-    const double *xs = xr + r->south, *xn = xr + r->north, *xd = xr + r->down,
-                 *xu = xr + r->up;
-    const uint8_t *m = L->mask + r->at;
     const double dg = 2.0 * (L->c[0] + L->c[1] + L->c[2]);
-    const fg_vd cx = fg_vd_set(L->c[0]), cy = fg_vd_set(L->c[1]), cz = fg_vd_set(L->c[2]),
-                vdg = fg_vd_set(dg), scale = fg_vd_set(r->scale), zero = fg_vd_set(0.0);
-    fg_vd acc = zero;
+    const row_view w = {xr,
+                        xr + r->south,
+                        xr + r->north,
+                        xr + r->down,
+                        xr + r->up,
+                        L->mask + r->at,
+                        fg_vd_set(L->c[0]),
+                        fg_vd_set(L->c[1]),
+                        fg_vd_set(L->c[2]),
+                        fg_vd_set(dg),
+                        fg_vd_set(r->scale),
+                        out ? out + r->at : NULL,
+                        n};
+    fg_vd acc0 = fg_vd_set(0.0), acc1 = acc0;
     int i = 1;
-    for (; i + FG_VD_LANES <= n - 1; i += FG_VD_LANES) {
-        fg_vd v = cx * (fg_vd_load(xr + i - 1) + fg_vd_load(xr + i + 1)) +
-                  cy * (fg_vd_load(xs + i) + fg_vd_load(xn + i)) +
-                  cz * (fg_vd_load(xd + i) + fg_vd_load(xu + i)) - vdg * fg_vd_load(xr + i);
-        v = fg_vd_select(fg_vl_zero_bytes(m + i), v * scale, zero);
-        acc += v * v;
-        if (out)
-            for (int l = 0; l < FG_VD_LANES; l++)
-                out[r->at + fg_split(n, i + l)] = (float)fg_vd_lane(v, l);
+    for (; i + 2 * FG_VD_LANES <= n - 1; i += 2 * FG_VD_LANES) {
+        acc0 += residual_block(&w, i);
+        acc1 += residual_block(&w, i + FG_VD_LANES);
     }
+    for (; i + FG_VD_LANES <= n - 1; i += FG_VD_LANES)
+        acc0 += residual_block(&w, i);
+    acc0 += acc1;
     double sum = 0.0;
     for (int l = 0; l < FG_VD_LANES; l++)
-        sum += fg_vd_lane(acc, l);
+        sum += fg_vd_lane(acc0, l);
     sum += scalar_residuals(L, xr, r, 0, 1, dg, out);
     sum += scalar_residuals(L, xr, r, i, n - 1, dg, out);
     sum += scalar_residuals(L, xr, r, n - 1, n, dg, out);
@@ -110,14 +140,56 @@ static double b_row(const fg_level *L, const double *x, const fg_row *r)
     return sum;
 }
 
+/* The residual rows of plane k; returns their squared norm. */
+static double residual_plane(const fg_level *L, const double *phi, int zero_free, int k,
+                             float *out)
+{
+    double sum = 0.0;
+    for (int j = 0; j < L->n[1]; j++) {
+        fg_row r = fg_level_row(L, j, k);
+        sum += zero_free ? b_row(L, phi, &r) : residual_row(L, phi, &r, out);
+    }
+    return sum;
+}
+
 double fg_lap_residual(const fg_level *L, const double *phi, int zero_free, float *out)
 {
     double sum = 0.0;
     for (int k = 0; k < L->n[2]; k++)
-        for (int j = 0; j < L->n[1]; j++) {
-            fg_row r = fg_level_row(L, j, k);
-            sum += zero_free ? b_row(L, phi, &r) : residual_row(L, phi, &r, out);
-        }
+        sum += residual_plane(L, phi, zero_free, k, out);
+    return sum;
+}
+
+/* phi += e (split rows) on the free nodes of plane k, a row's even nodes
+ * and then its odd ones; the Dirichlet nodes keep their values. */
+static void correct_plane(const fg_level *L, double *phi, const float *e, int k)
+{
+    const size_t n = (size_t)L->n[0], ne = (n + 1) / 2;
+    for (int j = 0; j < L->n[1]; j++) {
+        size_t row = fg_level_index(L, 0, j, k);
+        double *x = phi + row;
+        const uint8_t *m = L->mask + row;
+        const float *even = e + row, *odd = e + row + ne;
+        for (size_t u = 0; u < ne; u++)
+            if (!m[2 * u])
+                x[2 * u] += even[u];
+        for (size_t u = 0; u < n / 2; u++)
+            if (!m[2 * u + 1])
+                x[2 * u + 1] += odd[u];
+    }
+}
+
+/* A plane's residual reads the planes either side: the one above is
+ * corrected just before, so that phi is read once while in cache. */
+double fg_lap_correct_residual(const fg_level *L, double *phi, const float *e, float *out)
+{
+    double sum = 0.0;
+    correct_plane(L, phi, e, 0);
+    for (int k = 0; k < L->n[2]; k++) {
+        if (k + 1 < L->n[2])
+            correct_plane(L, phi, e, k + 1);
+        sum += residual_plane(L, phi, 0, k, out);
+    }
     return sum;
 }
 

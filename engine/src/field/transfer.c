@@ -30,7 +30,14 @@ static void reduce_row(const float *r, halves h, int nc, float *out)
     const float *even = r, *odd = r + h.odd;
     const ptrdiff_t s = h.stride;
     out[0] = even[0] + 0.5f * odd[0];
-    for (int I = 1; I < nc - 1; I++)
+    int I = 1;
+    if (s == 1) { /* split: both halves contiguous */
+        const fg_vf half = fg_vf_set(0.5f);
+        for (; I + FG_VF_LANES <= nc - 1; I += FG_VF_LANES)
+            fg_vf_store(out + I, fg_vf_load(even + I) +
+                                     half * (fg_vf_load(odd + I - 1) + fg_vf_load(odd + I)));
+    }
+    for (; I < nc - 1; I++)
         out[I] = even[I * s] + 0.5f * (odd[(I - 1) * s] + odd[I * s]);
     out[nc - 1] = even[(nc - 1) * s] + 0.5f * odd[(nc - 2) * s];
 }
@@ -88,6 +95,40 @@ void fg_restrict(const fg_level *F, const float *r, fg_level *C)
     }
 }
 
+/* A fine row of a level in the natural order (m its mask) += the coarse row
+ * interpolated along x from its sums: 1/4 of a sum at an even node, 1/8 of
+ * the two around an odd one. */
+static void spread(const float *sum, int nc, const uint8_t *m, float *e)
+{
+    for (int I = 0; I < nc; I++)
+        e[2 * I] += m[2 * I] ? 0.0f : 0.25f * sum[I];
+    for (int I = 0; I < nc - 1; I++)
+        e[2 * I + 1] += m[2 * I + 1] ? 0.0f : 0.125f * (sum[I] + sum[I + 1]);
+}
+
+/* The same on a split row of level 0, whose inv_diag (split too) is 0
+ * exactly on its Dirichlet nodes: a block of lanes at a time. */
+static void spread_split(const float *sum, int nc, const float *inv, float *even, float *odd)
+{
+    const fg_vf zero = fg_vf_set(0.0f), quarter = fg_vf_set(0.25f), eighth = fg_vf_set(0.125f);
+    const float *inv_odd = inv + (odd - even);
+    int I = 0;
+    for (; I + FG_VF_LANES <= nc; I += FG_VF_LANES)
+        fg_vf_store(even + I, fg_vf_load(even + I) +
+                                  fg_vf_select(fg_vf_load(inv + I) != zero,
+                                               quarter * fg_vf_load(sum + I), zero));
+    for (; I < nc; I++)
+        even[I] += inv[I] != 0.0f ? 0.25f * sum[I] : 0.0f;
+    for (I = 0; I + FG_VF_LANES <= nc - 1; I += FG_VF_LANES)
+        fg_vf_store(odd + I,
+                    fg_vf_load(odd + I) +
+                        fg_vf_select(fg_vf_load(inv_odd + I) != zero,
+                                     eighth * (fg_vf_load(sum + I) + fg_vf_load(sum + I + 1)),
+                                     zero));
+    for (; I < nc - 1; I++)
+        odd[I] += inv_odd[I] != 0.0f ? 0.125f * (sum[I] + sum[I + 1]) : 0.0f;
+}
+
 void fg_prolong_add(const fg_level *C, const fg_level *F, float *e)
 {
     float sum[MAX_COARSE_ROW];
@@ -108,12 +149,10 @@ void fg_prolong_add(const fg_level *C, const fg_level *F, float *e)
             for (; I < nc; I++)
                 sum[I] = (r00[I] + r01[I]) + (r10[I] + r11[I]);
             size_t row = fg_level_index(F, 0, j, k);
-            float *even = e + row, *odd = e + row + h.odd;
-            const uint8_t *m = F->mask + row;
-            for (I = 0; I < nc; I++)
-                even[I * h.stride] += m[2 * I] ? 0.0f : 0.25f * sum[I];
-            for (I = 0; I < nc - 1; I++)
-                odd[I * h.stride] += m[2 * I + 1] ? 0.0f : 0.125f * (sum[I] + sum[I + 1]);
+            if (F->split)
+                spread_split(sum, nc, F->inv_diag + row, e + row, e + row + h.odd);
+            else
+                spread(sum, nc, F->mask + row, e + row);
         }
     }
 }
