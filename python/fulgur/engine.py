@@ -23,6 +23,11 @@ from . import _convert
 from ._native import EMIT_NOW, ffi, lib
 from .errors import FulgurError, check
 
+# Looked up now, not when an engine is freed: __del__ may run from the
+# garbage collector inside one of cffi's own calls, which holds cffi's
+# (non-reentrant) lock that a first lookup of a library function takes.
+_engine_destroy = lib.fg_engine_destroy
+
 LAYOUT = {"stereo": lib.FG_LAYOUT_STEREO, "ambisonics": lib.FG_LAYOUT_AMBISONICS}
 BODIES = {"stick": lib.FG_AERO_STICK, "compact": lib.FG_AERO_COMPACT}
 ABSORPTION = {"off": lib.FG_ABSORPTION_OFF, "iso9613": lib.FG_ABSORPTION_ISO9613,
@@ -129,7 +134,7 @@ class Engine:
             while self._active:
                 self._life.wait()
         if handle is not None:
-            lib.fg_engine_destroy(handle)
+            _engine_destroy(handle)
         self._textures = []
 
     @property
