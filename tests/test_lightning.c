@@ -325,28 +325,18 @@ static void bad_input(void **state)
     fg_tree_destroy(t);
 }
 
-static uint64_t tree_hash(fg_tree *t)
-{
-    uint64_t h = 1469598103934665603u; /* FNV-1a over the nodes' bytes */
-    const unsigned char *b = (const unsigned char *)fg_tree_nodes(t);
-    for (size_t i = 0; i < fg_tree_count(t) * sizeof(fg_node); i++)
-        h = (h ^ b[i]) * 1099511628211u;
-    return h;
-}
-
-/* The in-cloud channel: none by default (the tree of the main branch
- * before the option, node for node: its count and hash were taken from
- * that build); with in_cloud_m a walk from the root along a jittered
- * horizontal course of that length, appended after the tree grown
- * without it. */
+/* The in-cloud channel: none by default; with in_cloud_m a walk from the
+ * root along a jittered horizontal course of that length, appended after
+ * the tree grown without it, which it leaves node for node. (That the
+ * default tree is the one from before the option is the sound hashes'
+ * and cli_render_in_cloud's to show: a stored count or hash of it would
+ * hold for one compiler only, as gcc and clang grow different trees.) */
 static void in_cloud_channel(void **state)
 {
     (void)state;
     fg_lightning_config p = {.seed = 1};
     fg_lightning_report r0, r5;
     fg_tree *t0 = generate(&p, &r0);
-    assert_int_equal(fg_tree_count(t0), 9446);
-    assert_true(tree_hash(t0) == 0x3fdc5029e48d1fa3u);
     assert_int_equal(r0.in_cloud_nodes, 0);
     assert_int_equal(r0.in_cloud_first, fg_tree_count(t0));
     assert_true(r0.in_cloud_length_m == 0);
