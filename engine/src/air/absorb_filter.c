@@ -8,6 +8,9 @@
 #define NP FG_ABSORB_PARAMS
 #define U_MAX 12.0 /* parameters stay where tanh still has a slope */
 #define ITERATIONS 600
+/* A run also stops once a step gains less than this share of the cost:
+ * the fit has settled (in a local minimum or at what four biquads can do). */
+#define SETTLED_GAIN 1e-9
 
 double fg_absorb_hi_hz(double fs_hz)
 {
@@ -139,13 +142,24 @@ static void solve(double a[NP][NP], double *b)
     }
 }
 
-/* One Levenberg-Marquardt run from u; returns the final cost. */
+static double worst_residual(const double *r)
+{
+    double worst = 0.0;
+    for (int i = 0; i < FG_ABSORB_GRID; i++)
+        worst = fmax(worst, fabs(r[i]));
+    return worst;
+}
+
+/* One Levenberg-Marquardt run from u, until every residual is within
+ * FG_ABSORB_STOP_DB or the steps stop gaining; returns the final cost. */
 static double levenberg_marquardt(const problem *pb, double *u)
 {
     static const double lambda_max = 1e12;
     double r[FG_ABSORB_GRID], jac[FG_ABSORB_GRID][NP];
     double cost = evaluate(pb, u, r, jac), lambda = 1e-2;
     for (int it = 0; it < ITERATIONS && lambda < lambda_max; it++) {
+        if (worst_residual(r) <= FG_ABSORB_STOP_DB)
+            return cost;
         double jtj[NP][NP], g[NP];
         for (int a = 0; a < NP; a++) {
             g[a] = 0.0;
@@ -174,7 +188,7 @@ static double levenberg_marquardt(const problem *pb, double *u)
                 double gain = cost - c;
                 cost = c;
                 lambda = fmax(lambda / 3.0, 1e-9);
-                if (gain < 1e-12 * (1.0 + cost))
+                if (gain < SETTLED_GAIN * (1.0 + cost))
                     return cost;
                 break;
             }
@@ -223,9 +237,7 @@ double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double 
         memcpy(u, fit->u, sizeof u);
         best = levenberg_marquardt(&pb, u);
         evaluate(&pb, u, r, NULL);
-        accepted = true;
-        for (int i = 0; i < FG_ABSORB_GRID; i++)
-            accepted = accepted && fabs(r[i]) <= FG_ABSORB_WARM_ACCEPT_DB;
+        accepted = worst_residual(r) <= FG_ABSORB_WARM_ACCEPT_DB;
     }
     /* Local minima are common: keep the best of a few starts. */
     static const double spreads[] = {1.5, 2.0, 3.0};
@@ -236,6 +248,8 @@ double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double 
         if (cost < best) {
             best = cost;
             memcpy(u, v, sizeof v);
+            evaluate(&pb, u, r, NULL);
+            accepted = worst_residual(r) <= FG_ABSORB_STOP_DB;
         }
     }
     to_filter(u, f);
@@ -244,9 +258,6 @@ double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double 
         memcpy(fit->u, u, sizeof u);
         fit->valid = true;
     }
-    double worst = 0.0;
     evaluate(&pb, u, r, NULL);
-    for (int i = 0; i < FG_ABSORB_GRID; i++)
-        worst = fmax(worst, fabs(r[i]));
-    return worst;
+    return worst_residual(r);
 }

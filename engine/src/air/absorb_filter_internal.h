@@ -10,7 +10,8 @@
  * the filter is stable and minimum phase by construction. b0 makes each section's DC gain exactly 1 (alpha(0) = 0).
  * Levenberg-Marquardt (exact Jacobian, the best of three starting pole
  * spreads, or a neighbouring distance's fit) then minimises the squared
- * decibel error. Below
+ * decibel error until every grid point is within FG_ABSORB_STOP_DB or the
+ * steps stop gaining. Below
  * FG_ABSORB_FLOOR_DB the target is a ceiling, not a value: there the error
  * counts only where the filter is louder than the floor, so the fit spends
  * no effort on attenuation nobody hears. Deterministic; no allocation.
@@ -36,6 +37,8 @@
 #define FG_ABSORB_MAX_RADIUS 0.999
 /* u1, u2 for each section's numerator and denominator */
 #define FG_ABSORB_PARAMS (4 * FG_IIR_MAX_SECTIONS)
+/* A fit stops once it is this close to the target at every grid point. */
+#define FG_ABSORB_STOP_DB 0.03
 /* A warm start is kept if it fits the grid this well. */
 #define FG_ABSORB_WARM_ACCEPT_DB 0.1
 
@@ -62,7 +65,7 @@ double fg_absorb_error_db(const fg_iir *f, const fg_air *air, double distance_m,
  * design starts from it and keeps the result when it fits within
  * FG_ABSORB_WARM_ACCEPT_DB, else it falls back to the cold starts; fit
  * then holds this design's parameters. Returns the largest |error| over
- * the fitting grid, dB. [main-thread] or [sim-thread]: 5-80 ms, no
+ * the fitting grid, dB. [main-thread] or [sim-thread]: 0.05-20 ms, no
  * allocation. */
 double fg_absorb_design(fg_iir *f, const fg_air *air, double distance_m, double fs_hz,
                         fg_absorb_fit *fit);

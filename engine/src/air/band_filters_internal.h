@@ -3,7 +3,7 @@
  *
  * Designing them (absorb_filter_internal.h: four biquads fitted by
  * Levenberg-Marquardt per band, each started from its nearer neighbour's
- * fit) costs about a second of CPU for the 46 bands of the engine's plan,
+ * fit) costs 0.15-0.3 s of CPU for the 45 bands of the engine's plan,
  * and every engine of a process with the same rate and weather needs the
  * same filters. The design is deterministic, so a kept design is the one a
  * new design would give, bit for bit. FG_BAND_FILTERS_KEPT designs are
@@ -21,7 +21,7 @@
  * (<= FG_BANDS_MAX), at fs_hz through air: a kept design, or a new one
  * that is then kept. Band k's fit starts from band k - 1's. [sim-thread]
  * or [main-thread]: takes a process-wide lock for the copy only; a new
- * design costs tens of milliseconds per band, no allocation. */
+ * design costs up to 20 ms per band, no allocation. */
 void fg_band_filters_design(const fg_air *air, const double *centre_m, unsigned count,
                             double fs_hz, fg_iir *out);
 

@@ -1,4 +1,6 @@
 #include <math.h>
+#include <stdbool.h>
+#include <string.h>
 
 #include "iir_internal.h"
 
@@ -31,10 +33,13 @@ void fg_iir_process(fg_iir *f, float *buf, size_t n)
     }
 }
 
-/* count (1..FG_IIR_LANES) lanes of `sections` sections; the state and
- * coefficients in local arrays, lanes innermost. */
-static void process_lanes(fg_iir *const *f, float *const *buf, unsigned count,
-                          unsigned sections, size_t n)
+/* count (1..FG_IIR_LANES) lanes as scalars side by side, every section
+ * per sample; the state and coefficients in local arrays, lanes
+ * innermost. */
+static inline __attribute__((always_inline)) void process_scalars(fg_iir *const *f,
+                                                                  float *const *buf,
+                                                                  unsigned count,
+                                                                  unsigned sections, size_t n)
 {
     double b0[FG_IIR_MAX_SECTIONS][FG_IIR_LANES], b1[FG_IIR_MAX_SECTIONS][FG_IIR_LANES],
         b2[FG_IIR_MAX_SECTIONS][FG_IIR_LANES], a1[FG_IIR_MAX_SECTIONS][FG_IIR_LANES],
@@ -75,18 +80,164 @@ static void process_lanes(fg_iir *const *f, float *const *buf, unsigned count,
     }
 }
 
-void fg_iir_process_lanes(fg_iir *const *f, float *const *buf, unsigned count, size_t n)
+/* process_scalars with its lane count constant (the compiler unrolls and
+ * interleaves the lanes). */
+static inline __attribute__((always_inline)) void scalars_counted(fg_iir *const *f,
+                                                                  float *const *buf,
+                                                                  unsigned count, size_t n)
 {
-    if (count == 0)
-        return;
-    /* a constant lane count lets the compiler unroll and interleave them */
     const unsigned sections = f[0]->sections;
     switch (count) {
-    case 1: process_lanes(f, buf, 1, sections, n); break;
-    case 2: process_lanes(f, buf, 2, sections, n); break;
-    case 3: process_lanes(f, buf, 3, sections, n); break;
-    default: process_lanes(f, buf, FG_IIR_LANES, sections, n); break;
+    case 1: process_scalars(f, buf, 1, sections, n); break;
+    case 2: process_scalars(f, buf, 2, sections, n); break;
+    case 3: process_scalars(f, buf, 3, sections, n); break;
+    default: process_scalars(f, buf, FG_IIR_LANES, sections, n); break;
     }
+}
+
+static void process_portable(fg_iir *const *f, float *const *buf, unsigned count, size_t n)
+{
+    scalars_counted(f, buf, count, n);
+}
+
+#if defined(__x86_64__) || defined(__i386__)
+/* The helpers of process_avx2, built for AVX2 (a 256-bit vector passed
+ * between functions of another target would change the ABI). */
+#define AVX2_INLINE static inline __attribute__((always_inline, target("avx2")))
+
+/* Four lanes side by side, one double each (GCC and clang vector
+ * extensions, used where the code is built for AVX: every operation is per
+ * lane, so a lane gets the roundings a scalar cascade gives it). */
+typedef double lanes_v __attribute__((vector_size(4 * sizeof(double))));
+typedef long long lanes_mask __attribute__((vector_size(4 * sizeof(long long))));
+
+/* snap() on each lane: fabs(v) < SNAP <=> -SNAP < v < SNAP (false for NaN) */
+AVX2_INLINE lanes_v snap_lanes(lanes_v v)
+{
+    lanes_mask tiny = (v < SNAP) & (v > -SNAP);
+    return (lanes_v)((lanes_mask)v & ~tiny);
+}
+
+typedef struct lanes_section {
+    lanes_v b0, b1, b2, a1, a2, z0, z1;
+} lanes_section;
+
+AVX2_INLINE lanes_v section_step(lanes_section *s, lanes_v x)
+{
+    lanes_v y = s->b0 * x + s->z0;
+    s->z0 = snap_lanes(s->b1 * x - s->a1 * y + s->z1);
+    s->z1 = snap_lanes(s->b2 * x - s->a2 * y);
+    return y;
+}
+
+/* Runs section s over x[0..m) in place. */
+AVX2_INLINE void run_section(lanes_section *s, lanes_v *x,
+                                                              size_t m)
+{
+    lanes_section t = *s;
+    for (size_t i = 0; i < m; i++)
+        x[i] = section_step(&t, x[i]);
+    *s = t;
+}
+
+/* Runs sections s and its successor u over x[0..m) in place, skewed by a
+ * sample: u takes sample i - 1 while s takes sample i, two recurrences
+ * that do not wait for each other. */
+AVX2_INLINE void run_section_pair(lanes_section *s,
+                                                                   lanes_section *u,
+                                                                   lanes_v *x, size_t m)
+{
+    lanes_section t = *s, v = *u;
+    x[0] = section_step(&t, x[0]);
+    for (size_t i = 1; i < m; i++) {
+        x[i - 1] = section_step(&v, x[i - 1]);
+        x[i] = section_step(&t, x[i]);
+    }
+    x[m - 1] = section_step(&v, x[m - 1]);
+    *s = t;
+    *u = v;
+}
+
+#define CHUNK 64 /* frames per pass through the sections */
+
+/* count (1..FG_IIR_LANES) lanes: the cascade runs section by section over
+ * chunks of CHUNK frames held in double (as the scalar cascade holds its
+ * value between sections), so each section's state stays in registers.
+ * Sections run two at a time. Lanes past count run zero filters on zeros
+ * and are not written. */
+AVX2_INLINE void process_lanes(fg_iir *const *f,
+                                                                float *const *buf,
+                                                                unsigned count, size_t n)
+{
+    const unsigned sections = f[0]->sections;
+    lanes_section sec[FG_IIR_MAX_SECTIONS];
+    memset(sec, 0, sizeof sec);
+    for (unsigned k = 0; k < sections; k++) {
+        for (unsigned j = 0; j < count; j++) {
+            const fg_biquad *b = &f[j]->sec[k];
+            sec[k].b0[j] = b->b0;
+            sec[k].b1[j] = b->b1;
+            sec[k].b2[j] = b->b2;
+            sec[k].a1[j] = b->a1;
+            sec[k].a2[j] = b->a2;
+            sec[k].z0[j] = f[j]->z[k][0];
+            sec[k].z1[j] = f[j]->z[k][1];
+        }
+    }
+    lanes_v x[CHUNK];
+    for (size_t start = 0; start < n; start += CHUNK) {
+        size_t m = n - start < CHUNK ? n - start : CHUNK;
+        for (size_t i = 0; i < m; i++) {
+            lanes_v v = {0.0, 0.0, 0.0, 0.0};
+            for (unsigned j = 0; j < count; j++)
+                v[j] = buf[j][start + i];
+            x[i] = v;
+        }
+        unsigned k = 0;
+        for (; k + 1 < sections; k += 2)
+            run_section_pair(&sec[k], &sec[k + 1], x, m);
+        for (; k < sections; k++)
+            run_section(&sec[k], x, m);
+        for (size_t i = 0; i < m; i++)
+            for (unsigned j = 0; j < count; j++)
+                buf[j][start + i] = (float)x[i][j];
+    }
+    for (unsigned k = 0; k < sections; k++) {
+        for (unsigned j = 0; j < count; j++) {
+            f[j]->z[k][0] = sec[k].z0[j];
+            f[j]->z[k][1] = sec[k].z1[j];
+        }
+    }
+}
+
+/* AVX's sixteen four-double registers hold a pair of sections' state: three
+ * or four lanes run as vectors, fewer as scalars (the vectors' moves
+ * between planes and lanes cost more than they save there). Without FMA
+ * (and with ISO C's contraction off) each lane gets the portable code's
+ * roundings in the same order. */
+__attribute__((target("avx2"))) static void process_avx2(fg_iir *const *f, float *const *buf,
+                                                         unsigned count, size_t n)
+{
+    if (count >= 4)
+        process_lanes(f, buf, FG_IIR_LANES, n);
+    else if (count == 3)
+        process_lanes(f, buf, 3, n);
+    else
+        scalars_counted(f, buf, count, n);
+}
+#endif
+
+void fg_iir_process_lanes(fg_iir *const *f, float *const *buf, unsigned count, size_t n)
+{
+    if (count == 0 || n == 0)
+        return;
+#if defined(__x86_64__) || defined(__i386__)
+    if (__builtin_cpu_supports("avx2")) {
+        process_avx2(f, buf, count, n);
+        return;
+    }
+#endif
+    process_portable(f, buf, count, n);
 }
 
 fg_phasor fg_phasor_at(double w)

@@ -34,7 +34,12 @@ void fg_iir_process(fg_iir *f, float *buf, size_t n);
  * < count, every filter with the same number of sections: each lane gives
  * exactly what fg_iir_process gives it (the same operations in the same
  * order), but the lanes' recurrences run side by side instead of one
- * after the other, which hides the latency of each. [audio-thread] */
+ * after the other, which hides the latency of each. On an x86 processor
+ * with AVX2 (checked per call), three or four lanes run as one vector of
+ * doubles, section after section over 64-frame chunks held in double, two
+ * sections skewed by a sample so that their recurrences overlap: the
+ * same operations per lane without FMA, so the same samples, 23-35 %
+ * faster here. [audio-thread] */
 #define FG_IIR_LANES 4
 void fg_iir_process_lanes(fg_iir *const *f, float *const *buf, unsigned count, size_t n);
 

@@ -79,7 +79,7 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
 void fg_bus_set_deinit(fg_bus_set *s);
 
 /* Designs the ISO 9613-1 band filters the first time a voice needs them
- * (about a second of CPU for the first engine of a process with this rate
+ * (0.15-0.3 s of CPU for the first engine of a process with this rate
  * and air, a copy for the others: air/band_filters_internal.h).
  * [sim-thread] */
 void fg_bus_set_design_bands(fg_bus_set *s);
