@@ -13,7 +13,8 @@
  *   - a good file swaps the engine in while the old one plays its notes
  *     out: a note played before the swap is not cut, one after it sounds
  *     through the new engine, and the output is the one without the swap;
- *   - the state carries the file to a fresh instance;
+ *   - the state carries the file to a fresh instance; one whose file has
+ *     gone says so and plays on;
  *   - swapped-out engines are destroyed once played out.
  * run() and the responses never allocate or lock (the guard), the swap
  * included. */
@@ -330,6 +331,40 @@ static void test_swap_keeps_notes(void **state)
     take_free(&swap);
 }
 
+/* A state naming a file that has gone since: the restore says so through
+ * the log, and the fresh instance plays the file it had. */
+static void test_restore_missing_file(void **state)
+{
+    (void)state;
+    char link[] = "/tmp/fulgur_lv2_kemarXXXXXX";
+    int fd = mkstemp(link);
+    assert_true(fd >= 0);
+    close(fd);
+    unlink(link);
+    assert_int_equal(symlink(SOFA_DEFAULT_FILE, link), 0);
+    lv2_host *h = open_plugin("-binaural");
+    const cue swap = {0, 0, link};
+    take t;
+    assert_int_equal(play(h, &swap, 1, &t), 0);
+    take_free(&t);
+    assert_string_equal(lv2_host_notified_path(h), link);
+    LilvState *snap = lv2_host_save(h);
+    assert_non_null(snap);
+    unlink(link);
+    lv2_host *fresh = open_plugin("-binaural");
+    lv2_host_restore(fresh, snap);
+    fprintf(stderr, "restore logged: %s", lv2_host_last_log(fresh));
+    assert_non_null(strstr(lv2_host_last_log(fresh), link));
+    assert_non_null(strstr(lv2_host_last_log(fresh), "the previous file plays on"));
+    const cue none = {-1, 0, NULL};
+    assert_int_equal(play(fresh, &none, 1, &t), 0);
+    assert_string_equal(lv2_host_notified_path(fresh), SOFA_DEFAULT_FILE);
+    take_free(&t);
+    lilv_state_free(snap);
+    lv2_host_destroy(fresh);
+    lv2_host_destroy(h);
+}
+
 /* Swapped-out engines are destroyed once played out: four swaps in a row
  * (a short spark before them) all succeed though the plugin holds four
  * engines at most, and each ends in a retire request to the worker. */
@@ -365,6 +400,7 @@ int main(void)
         cmocka_unit_test(test_ambisonics_are_the_engines),
         cmocka_unit_test(test_bad_sofa_plays_on),
         cmocka_unit_test(test_swap_keeps_notes),
+        cmocka_unit_test(test_restore_missing_file),
         cmocka_unit_test(test_swaps_retire),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
