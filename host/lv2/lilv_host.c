@@ -371,6 +371,8 @@ const char *lv2_host_last_log(const lv2_host *h) { return h->logged; }
 
 void lv2_host_run(lv2_host *h, uint32_t frames, float *left, float *right)
 {
+    if (h->audio_count != 2) /* a caller's error: the plugin has other outputs */
+        abort();
     float *const planes[2] = {left, right};
     lv2_host_run_planes(h, frames, planes);
 }

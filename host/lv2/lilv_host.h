@@ -3,7 +3,9 @@
  *
  * Discovers plugins through LV2_PATH (or the standard places), instantiates
  * one of fulgur.lv2's plugins, owns every port buffer, and provides
- * urid:map, urid:unmap, worker:schedule and log:log itself. Work scheduled from run() is queued without
+ * urid:map, urid:unmap, worker:schedule and log:log itself. Audio outputs
+ * are the planes in the order of their port indices; an atom output is
+ * read as the plugin's notify port (patch:Set of a path). Work scheduled from run() is queued without
  * allocating; lv2_host_work runs the queue on whichever thread calls it
  * (never while lv2_host_run runs): a test calls it from a worker thread,
  * an offline renderer between blocks. The responses are delivered at the
@@ -44,7 +46,8 @@ int lv2_host_midi(lv2_host *host, uint32_t frame, uint8_t status, uint8_t data1,
 int lv2_host_set_path(lv2_host *host, const char *property, const char *path);
 
 /* Delivers pending responses, then runs the plugin for frames into
- * left/right (a plugin of two outputs), or into planes (one per output).
+ * left/right (a plugin of two outputs; any other aborts), or into planes
+ * (one per output).
  * [audio-thread]: no allocation or lock of its own. */
 void lv2_host_run(lv2_host *host, uint32_t frames, float *left, float *right);
 void lv2_host_run_planes(lv2_host *host, uint32_t frames, float *const *planes);
