@@ -64,4 +64,17 @@ grep -q -- "--sofa $dir/one.mid: the plugin refused it" "$dir/err" || exit 1
 "$render" "$dir/one.mid" -o "$dir/nosofa.wav" --sofa /usr/share/libmysofa/default.sofa 2> "$dir/err"
 rc=$?
 [ $rc -eq 2 ] && grep -q "only with --layout binaural" "$dir/err" || { echo "--sofa without binaural: rc $rc"; cat "$dir/err"; exit 1; }
+# another SOFA set (16 directions, a pulse in each ear, written by ncgen):
+# two channels, not KEMAR's
+if command -v ncgen >/dev/null 2>&1; then
+    tmp=$dir
+    . "$(dirname "$0")/sofa_cdl.sh"
+    sofa pulses 16 2 32 48000
+    "$render" "$dir/one.mid" -o "$dir/pulses.wav" -t 1 distance=5 gain=-30 --layout binaural \
+        --sofa "$dir/pulses.sofa" || { echo "--sofa pulses.sofa failed"; exit 1; }
+    "$fulgur" analyze "$dir/pulses.wav" | grep -q ": 2 ch, 48000 Hz, 1.500 s" || exit 1
+    cmp -s "$dir/bin.wav" "$dir/pulses.wav" && { echo "another SOFA set rendered KEMAR's bytes"; exit 1; }
+else
+    echo "ncgen not found (netcdf-bin): another SOFA set not tried"
+fi
 echo ok
