@@ -14,7 +14,8 @@
  *     out: a note played before the swap is not cut, one after it sounds
  *     through the new engine, and the output is the one without the swap;
  *   - the state carries the file to a fresh instance; one whose file has
- *     gone says so and plays on;
+ *     gone says so and plays on; one restored while a swap's reply is on
+ *     its way wins over it;
  *   - swapped-out engines are destroyed once played out.
  * run() and the responses never allocate or lock (the guard), the swap
  * included. */
@@ -365,6 +366,43 @@ static void test_restore_missing_file(void **state)
     lv2_host_destroy(h);
 }
 
+/* A restore between a swap's work and its reply: the reply names an engine
+ * restore has destroyed, and is dropped; the restored file plays. */
+static void test_restore_during_swap(void **state)
+{
+    (void)state;
+    char link[] = "/tmp/fulgur_lv2_kemarXXXXXX";
+    int fd = mkstemp(link);
+    assert_true(fd >= 0);
+    close(fd);
+    unlink(link);
+    assert_int_equal(symlink(SOFA_DEFAULT_FILE, link), 0);
+    lv2_host *saved = open_plugin("-binaural");
+    const cue to_link = {0, 0, link};
+    take t;
+    assert_int_equal(play(saved, &to_link, 1, &t), 0);
+    take_free(&t);
+    LilvState *snap = lv2_host_save(saved);
+    assert_non_null(snap);
+
+    lv2_host *h = open_plugin("-binaural");
+    float l[BLOCK], r[BLOCK];
+    assert_int_equal(lv2_host_set_path(h, SOFA_URI, KEMAR_LINK), 0);
+    lv2_host_run(h, BLOCK, l, r);
+    assert_int_equal(lv2_work_on_thread(h, NULL), 1); /* the new engine, its reply queued */
+    lv2_host_restore(h, snap);
+    const cue note = {2, KEY, NULL};
+    assert_int_equal(play(h, &note, 1, &t), 0);
+    assert_string_equal(lv2_host_notified_path(h), link);
+    assert_true(lv2_host_get(h, "discharges") == 1);
+    assert_true(take_peak(&t) > 1e-3);
+    take_free(&t);
+    lilv_state_free(snap);
+    lv2_host_destroy(h);
+    lv2_host_destroy(saved);
+    unlink(link);
+}
+
 /* Swapped-out engines are destroyed once played out: four swaps in a row
  * (a short spark before them) all succeed though the plugin holds four
  * engines at most, and each ends in a retire request to the worker. */
@@ -401,6 +439,7 @@ int main(void)
         cmocka_unit_test(test_bad_sofa_plays_on),
         cmocka_unit_test(test_swap_keeps_notes),
         cmocka_unit_test(test_restore_missing_file),
+        cmocka_unit_test(test_restore_during_swap),
         cmocka_unit_test(test_swaps_retire),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

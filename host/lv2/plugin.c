@@ -227,7 +227,8 @@ static void render(plugin *p, fg_engine *engine, float *const *planes, uint32_t 
 /* Hands the retiring engine back to the worker. */
 static void retire(plugin *p)
 {
-    retire_request rq = {.kind = REQUEST_RETIRE, .slot = (uint32_t)p->retiring};
+    retire_request rq = {.kind = REQUEST_RETIRE, .slot = (uint32_t)p->retiring,
+                         .generation = p->generation};
     schedule(p, &rq, sizeof rq);
     p->retiring = -1;
 }

@@ -123,6 +123,7 @@ typedef struct sofa_request {
 typedef struct retire_request {
     request_kind kind;
     uint32_t slot;
+    uint32_t generation;        /* plugin.generation when sent */
 } retire_request;
 
 /* work() -> work_response(): what became of a request; for REQUEST_SOFA,
@@ -131,6 +132,7 @@ typedef struct work_reply {
     request_kind kind;
     fg_result result;
     uint32_t slot;
+    uint32_t generation;        /* plugin.generation when made */
 } work_reply;
 
 /* An engine the plugin holds, with the SOFA file it was made from ("" but
@@ -169,6 +171,10 @@ typedef struct plugin {
     LV2_Log_Logger logger;      /* the host's log, else stderr; not from run() */
     /* the engines: see engine_slot */
     engine_slot slots[ENGINE_SLOTS];
+    /* [main-thread] restores that replaced the engines: a swap's reply or
+     * retire request of an earlier generation names a slot restore has
+     * destroyed (and may have reused), and is dropped */
+    uint32_t generation;
     /* [audio-thread] */
     void *ports[PLUGIN_PORTS_MAX];
     _Atomic uint32_t playing;   /* the slot rendered (read by state save) */

@@ -14,7 +14,9 @@
  * playing slot's path, which the worker writes only while the slot is free,
  * and a slot is freed RETIRE_TAIL_S after the audio thread let it go.
  * restore() runs alone (LV2's instantiation class): it makes the engine of
- * the saved file directly, and a swap's held notes end there. */
+ * the saved file directly and destroys the others (a swap's held notes end
+ * there); the swaps' replies and retire requests still on their way then
+ * name destroyed slots and are dropped (plugin.generation). */
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
@@ -87,6 +89,7 @@ static LV2_State_Status restore_sofa(plugin *p, LV2_State_Retrieve_Function retr
                 engine_slot_destroy(p, s);
         atomic_store_explicit(&p->playing, (uint32_t)slot, memory_order_relaxed);
         p->posting = (uint32_t)slot;
+        p->generation++; /* replies and retire requests on their way are stale */
         p->retiring = -1;
         p->notify_pending = 1;
     }

@@ -47,7 +47,8 @@ static LV2_Worker_Status note(plugin *p, LV2_Worker_Respond_Function respond,
 static LV2_Worker_Status sofa(plugin *p, LV2_Worker_Respond_Function respond,
                               LV2_Worker_Respond_Handle handle, const sofa_request *rq)
 {
-    work_reply reply = {.kind = REQUEST_SOFA, .result = FG_ERR_ARGUMENT};
+    work_reply reply = {.kind = REQUEST_SOFA, .result = FG_ERR_ARGUMENT,
+                        .generation = p->generation};
     char err[600];
     int slot = -1;
     if (rq->length >= SOFA_PATH_BYTES)
@@ -90,6 +91,8 @@ LV2_Worker_Status plugin_work(LV2_Handle instance, LV2_Worker_Respond_Function r
     if (kind == REQUEST_RETIRE && size == sizeof(retire_request)) {
         retire_request rq;
         memcpy(&rq, data, sizeof rq);
+        if (rq.generation != p->generation)
+            return LV2_WORKER_SUCCESS; /* restore has destroyed it already */
         if (rq.slot >= ENGINE_SLOTS || rq.slot == p->posting)
             return LV2_WORKER_ERR_UNKNOWN;
         engine_slot_destroy(p, rq.slot);
@@ -106,6 +109,8 @@ LV2_Worker_Status plugin_work_response(LV2_Handle instance, uint32_t size, const
         return LV2_WORKER_ERR_UNKNOWN;
     memcpy(&reply, body, sizeof reply);
     if (reply.kind == REQUEST_SOFA) {
+        if (reply.generation != p->generation)
+            return LV2_WORKER_SUCCESS; /* an engine restore has destroyed */
         if (reply.result == FG_OK)
             plugin_engine_swapped(p, reply.slot);
         p->notify_pending = 1; /* the file now playing, new or not */
