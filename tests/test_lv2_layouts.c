@@ -13,6 +13,7 @@
  *   - a good file swaps the engine in while the old one plays its notes
  *     out: a note played before the swap is not cut, one after it sounds
  *     through the new engine, and the output is the one without the swap;
+ *     a held note sounds through it until its note-off;
  *   - the state carries the file to a fresh instance; one whose file has
  *     gone says so and plays on; one restored while a swap's reply is on
  *     its way wins over it;
@@ -122,6 +123,7 @@ typedef struct cue {
     int block;
     int key;            /* a note-on of this key, or 0 */
     const char *sofa;   /* a patch:Set of the SOFA file, or NULL */
+    int off_key;        /* a note-off of this key, or 0 */
 } cue;
 
 /* Plays blocks with the cues into t (the plugin's channels), the worker
@@ -139,6 +141,9 @@ static unsigned long play(lv2_host *h, const cue *cues, size_t cue_count, take *
                                                VELOCITY), 0);
             if (cues[c].sofa)
                 assert_int_equal(lv2_host_set_path(h, SOFA_URI, cues[c].sofa), 0);
+            if (cues[c].off_key)
+                assert_int_equal(lv2_host_midi(h, NOTE_FRAME, 0x80, (uint8_t)cues[c].off_key, 0),
+                                 0);
         }
         float *planes[LV2_HOST_CHANNELS_MAX];
         for (unsigned k = 0; k < t->channels; k++)
@@ -155,7 +160,7 @@ static unsigned long play(lv2_host *h, const cue *cues, size_t cue_count, take *
 static void play_note(const char *suffix, take *t)
 {
     lv2_host *h = open_plugin(suffix);
-    const cue note = {NOTE_BLOCK, KEY, NULL};
+    const cue note = {NOTE_BLOCK, KEY, NULL, 0};
     assert_int_equal(play(h, &note, 1, t), 0);
     assert_true(lv2_host_get(h, "discharges") == 1);
     assert_true(lv2_host_get(h, "failures") == 0);
@@ -274,9 +279,9 @@ static void test_bad_sofa_plays_on(void **state)
     take reference, bad;
     play_note("-binaural", &reference);
     lv2_host *h = open_plugin("-binaural");
-    const cue cues[] = {{NOTE_BLOCK, KEY, NULL},
-                        {40, 0, "/nonexistent/kemar.sofa"},
-                        {41, 0, not_sofa}};
+    const cue cues[] = {{NOTE_BLOCK, KEY, NULL, 0},
+                        {40, 0, "/nonexistent/kemar.sofa", 0},
+                        {41, 0, not_sofa, 0}};
     assert_int_equal(play(h, cues, 3, &bad), 0);
     const char *log = lv2_host_last_log(h);
     fprintf(stderr, "logged: %s", log);
@@ -298,8 +303,9 @@ static void test_bad_sofa_plays_on(void **state)
 static void test_swap_keeps_notes(void **state)
 {
     (void)state;
-    const cue plain[] = {{NOTE_BLOCK, KEY, NULL}, {100, KEY + 5, NULL}};
-    const cue swapped[] = {{NOTE_BLOCK, KEY, NULL}, {60, 0, KEMAR_LINK}, {100, KEY + 5, NULL}};
+    const cue plain[] = {{NOTE_BLOCK, KEY, NULL, 0}, {100, KEY + 5, NULL, 0}};
+    const cue swapped[] = {
+        {NOTE_BLOCK, KEY, NULL, 0}, {60, 0, KEMAR_LINK, 0}, {100, KEY + 5, NULL, 0}};
     take reference, swap;
     lv2_host *h = open_plugin("-binaural");
     assert_int_equal(play(h, plain, 2, &reference), 0);
@@ -321,7 +327,7 @@ static void test_swap_keeps_notes(void **state)
     lv2_host *fresh = open_plugin("-binaural");
     lv2_host_restore(fresh, snap);
     take after;
-    const cue none = {-1, 0, NULL};
+    const cue none = {-1, 0, NULL, 0};
     assert_int_equal(play(fresh, &none, 1, &after), 0);
     assert_string_equal(lv2_host_notified_path(fresh), KEMAR_LINK);
     lilv_state_free(snap);
@@ -344,7 +350,7 @@ static void test_restore_missing_file(void **state)
     unlink(link);
     assert_int_equal(symlink(SOFA_DEFAULT_FILE, link), 0);
     lv2_host *h = open_plugin("-binaural");
-    const cue swap = {0, 0, link};
+    const cue swap = {0, 0, link, 0};
     take t;
     assert_int_equal(play(h, &swap, 1, &t), 0);
     take_free(&t);
@@ -357,7 +363,7 @@ static void test_restore_missing_file(void **state)
     fprintf(stderr, "restore logged: %s", lv2_host_last_log(fresh));
     assert_non_null(strstr(lv2_host_last_log(fresh), link));
     assert_non_null(strstr(lv2_host_last_log(fresh), "the previous file plays on"));
-    const cue none = {-1, 0, NULL};
+    const cue none = {-1, 0, NULL, 0};
     assert_int_equal(play(fresh, &none, 1, &t), 0);
     assert_string_equal(lv2_host_notified_path(fresh), SOFA_DEFAULT_FILE);
     take_free(&t);
@@ -378,7 +384,7 @@ static void test_restore_during_swap(void **state)
     unlink(link);
     assert_int_equal(symlink(SOFA_DEFAULT_FILE, link), 0);
     lv2_host *saved = open_plugin("-binaural");
-    const cue to_link = {0, 0, link};
+    const cue to_link = {0, 0, link, 0};
     take t;
     assert_int_equal(play(saved, &to_link, 1, &t), 0);
     take_free(&t);
@@ -391,7 +397,7 @@ static void test_restore_during_swap(void **state)
     lv2_host_run(h, BLOCK, l, r);
     assert_int_equal(lv2_work_on_thread(h, NULL), 1); /* the new engine, its reply queued */
     lv2_host_restore(h, snap);
-    const cue note = {2, KEY, NULL};
+    const cue note = {2, KEY, NULL, 0};
     assert_int_equal(play(h, &note, 1, &t), 0);
     assert_string_equal(lv2_host_notified_path(h), link);
     assert_true(lv2_host_get(h, "discharges") == 1);
@@ -403,6 +409,39 @@ static void test_restore_during_swap(void **state)
     unlink(link);
 }
 
+/* A plasma ball held through a swap: it sounds on in the old engine, its
+ * note-off ends it there, and the old engine is then retired. */
+static void test_held_note_through_swap(void **state)
+{
+    (void)state;
+    lv2_host *h = open_plugin("-binaural");
+    lv2_host_set(h, "preset", FG_PRESET_PLASMA_BALL);
+    lv2_host_set(h, "distance", 1);
+    lv2_host_set(h, "gain", 0);
+    const cue cues[] = {{NOTE_BLOCK, KEY, NULL, 0}, {20, 0, KEMAR_LINK, 0}, {100, 0, NULL, KEY}};
+    take t;
+    assert_int_equal(play(h, cues, 3, &t), 0);
+    /* sounding between the swap and the note-off, silent 0.3 s after it */
+    float held = 0, after = 0;
+    for (unsigned k = 0; k < 2; k++)
+        for (size_t i = 0; i < t.frames; i++) {
+            if (i >= 30 * BLOCK && i < 100 * BLOCK)
+                held = fmaxf(held, fabsf(t.plane[k][i]));
+            if (i >= 100 * BLOCK + (size_t)(0.3 * RATE_HZ))
+                after = fmaxf(after, fabsf(t.plane[k][i]));
+        }
+    fprintf(stderr, "held through the swap: peak %g Pa, after its note-off %g Pa, %u worker "
+                    "calls\n",
+            (double)held, (double)after, lv2_host_work_calls(h));
+    assert_true(held > 1e-4);
+    assert_true(after < 1e-6);
+    assert_true(lv2_host_get(h, "failures") == 0);
+    /* the note-on, the file, the note-off, the old engine retired */
+    assert_int_equal(lv2_host_work_calls(h), 4);
+    lv2_host_destroy(h);
+    take_free(&t);
+}
+
 /* Swapped-out engines are destroyed once played out: four swaps in a row
  * (a short spark before them) all succeed though the plugin holds four
  * engines at most, and each ends in a retire request to the worker. */
@@ -412,11 +451,11 @@ static void test_swaps_retire(void **state)
     lv2_host *h = open_plugin("-binaural");
     lv2_host_set(h, "preset", FG_PRESET_SPARK_BALLS);
     lv2_host_set(h, "distance", 2);
-    const cue cues[] = {{NOTE_BLOCK, KEY, NULL},
-                        {10, 0, KEMAR_LINK},
-                        {80, 0, SOFA_DEFAULT_FILE},
-                        {150, 0, KEMAR_LINK},
-                        {220, 0, SOFA_DEFAULT_FILE}};
+    const cue cues[] = {{NOTE_BLOCK, KEY, NULL, 0},
+                        {10, 0, KEMAR_LINK, 0},
+                        {80, 0, SOFA_DEFAULT_FILE, 0},
+                        {150, 0, KEMAR_LINK, 0},
+                        {220, 0, SOFA_DEFAULT_FILE, 0}};
     take t;
     assert_int_equal(play(h, cues, 5, &t), 0);
     fprintf(stderr, "swaps: %u worker calls, log \"%s\"\n", lv2_host_work_calls(h),
@@ -440,6 +479,7 @@ int main(void)
         cmocka_unit_test(test_swap_keeps_notes),
         cmocka_unit_test(test_restore_missing_file),
         cmocka_unit_test(test_restore_during_swap),
+        cmocka_unit_test(test_held_note_through_swap),
         cmocka_unit_test(test_swaps_retire),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
