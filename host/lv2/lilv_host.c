@@ -225,7 +225,10 @@ static int set_lv2_path(LilvWorld *world)
     return 0;
 }
 
-lv2_host *lv2_host_create(double rate_hz) { return lv2_host_create_plugin(FULGUR_LV2_URI, rate_hz); }
+lv2_host *lv2_host_create(double rate_hz)
+{
+    return lv2_host_create_plugin(FULGUR_LV2_URI, rate_hz);
+}
 
 lv2_host *lv2_host_create_plugin(const char *plugin_uri, double rate_hz)
 {

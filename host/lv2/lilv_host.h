@@ -5,8 +5,8 @@
  * one of fulgur.lv2's plugins, owns every port buffer, and provides
  * urid:map, urid:unmap, worker:schedule and log:log itself. Audio outputs
  * are the planes in the order of their port indices; an atom output is
- * read as the plugin's notify port (patch:Set of a path). Work scheduled from run() is queued without
- * allocating; lv2_host_work runs the queue on whichever thread calls it
+ * read as the plugin's notify port (patch:Set of a path). Work scheduled
+ * from run() is queued without allocating; lv2_host_work runs the queue on whichever thread calls it
  * (never while lv2_host_run runs): a test calls it from a worker thread,
  * an offline renderer between blocks. The responses are delivered at the
  * start of the next lv2_host_run, before run(), on its thread. */
