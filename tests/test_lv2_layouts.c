@@ -2,7 +2,7 @@
  *   - the binaural plugin's render of a note equals the engine's own
  *     binaural render of the same discharge through the same SOFA file
  *     (the MIT KEMAR set, read at the host's rate, as fulgur render reads
- *     it), and is not the stereo plugin's;
+ *     it), at 48 and 44.1 kHz, and is not the stereo plugin's;
  *   - the ambisonic plugins have (N+1)^2 outputs, each equal to the
  *     engine's ambisonic render of order N, and the same W (ACN 0) in every
  *     order;
@@ -37,7 +37,9 @@
 #include "lv2_fixture.h"
 #include "sofa_hrir.h"
 
-#define RATE_HZ 48000.0
+/* The host's rate: 48 kHz (the KEMAR file's 44.1 kHz converted at load),
+ * and 44.1 kHz for one case (read as it is). */
+static double rate_hz = 48000.0;
 #define BLOCK 256
 #define BLOCKS 282        /* 1.5 s */
 #define NOTE_BLOCK 1      /* the note-on's block */
@@ -107,7 +109,7 @@ static lv2_host *open_plugin(const char *suffix)
 {
     char uri[256];
     snprintf(uri, sizeof uri, "%s%s", FULGUR_LV2_URI, suffix);
-    lv2_host *h = lv2_host_create_plugin(uri, RATE_HZ);
+    lv2_host *h = lv2_host_create_plugin(uri, rate_hz);
     assert_non_null(h);
     lv2_host_set(h, "gain", 0); /* pascals */
     lv2_host_set(h, "preset", FG_PRESET_LIGHTNING);
@@ -202,23 +204,24 @@ static void engine_note(const fg_engine_config *config, take *t)
 
 static void test_binaural_is_the_engines(void **state)
 {
-    (void)state;
+    rate_hz = *(const double *)*state;
     take plugin, stereo, engine;
     play_note("-binaural", &plugin);
     assert_int_equal(plugin.channels, 2);
     sofa_hrirs hrirs;
     char err[600];
-    assert_int_equal(sofa_hrirs_read(SOFA_DEFAULT_FILE, RATE_HZ, &hrirs, err, sizeof err), 0);
-    fg_engine_config config = {.sample_rate_hz = RATE_HZ, .channels = 2,
+    assert_int_equal(sofa_hrirs_read(SOFA_DEFAULT_FILE, rate_hz, &hrirs, err, sizeof err), 0);
+    fg_engine_config config = {.sample_rate_hz = rate_hz, .channels = 2,
                                .layout = FG_LAYOUT_BINAURAL, .hrirs = &hrirs.set};
     engine_note(&config, &engine);
     sofa_hrirs_free(&hrirs);
     play_note("", &stereo);
     float peak = take_peak(&engine), diff = take_diff(&plugin, &engine);
     float from_stereo = take_diff(&plugin, &stereo);
-    fprintf(stderr, "binaural: peak %g Pa, plugin - engine %g (%.2g of the peak), plugin - "
-                    "stereo plugin %g\n",
-            (double)peak, (double)diff, (double)(diff / peak), (double)from_stereo);
+    fprintf(stderr,
+            "binaural at %.0f Hz: peak %g Pa, plugin - engine %g (%.2g of the peak), "
+            "plugin - stereo plugin %g\n",
+            rate_hz, (double)peak, (double)diff, (double)(diff / peak), (double)from_stereo);
     assert_true(peak > 1e-3);
     assert_true(diff <= MATCH_TOLERANCE * peak);
     /* the measured head is not the spherical one */
@@ -226,6 +229,7 @@ static void test_binaural_is_the_engines(void **state)
     take_free(&plugin);
     take_free(&stereo);
     take_free(&engine);
+    rate_hz = 48000.0;
 }
 
 static void test_ambisonics_are_the_engines(void **state)
@@ -238,7 +242,7 @@ static void test_ambisonics_are_the_engines(void **state)
         take plugin, engine;
         play_note(suffix, &plugin);
         assert_int_equal(plugin.channels, (order + 1) * (order + 1));
-        fg_engine_config config = {.sample_rate_hz = RATE_HZ,
+        fg_engine_config config = {.sample_rate_hz = rate_hz,
                                    .channels = (order + 1) * (order + 1),
                                    .layout = FG_LAYOUT_AMBISONICS, .ambisonic_order = order};
         engine_note(&config, &engine);
@@ -427,7 +431,7 @@ static void test_held_note_through_swap(void **state)
         for (size_t i = 0; i < t.frames; i++) {
             if (i >= 30 * BLOCK && i < 100 * BLOCK)
                 held = fmaxf(held, fabsf(t.plane[k][i]));
-            if (i >= 100 * BLOCK + (size_t)(0.3 * RATE_HZ))
+            if (i >= 100 * BLOCK + (size_t)(0.3 * rate_hz))
                 after = fmaxf(after, fabsf(t.plane[k][i]));
         }
     fprintf(stderr, "held through the swap: peak %g Pa, after its note-off %g Pa, %u worker "
@@ -470,10 +474,13 @@ static void test_swaps_retire(void **state)
     take_free(&t);
 }
 
+static double rate_48k = 48000, rate_44k = 44100;
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_binaural_is_the_engines),
+        cmocka_unit_test_prestate(test_binaural_is_the_engines, &rate_48k),
+        cmocka_unit_test_prestate(test_binaural_is_the_engines, &rate_44k),
         cmocka_unit_test(test_ambisonics_are_the_engines),
         cmocka_unit_test(test_bad_sofa_plays_on),
         cmocka_unit_test(test_swap_keeps_notes),
