@@ -6,18 +6,21 @@
  *                                         schedule_work, renders the engine
  *   work()                [sim-thread]    the LV2 worker: collects finished
  *                                         voices, grows the tree, posts it,
- *                                         stops held notes; one at a time
+ *                                         stops held notes; reads a SOFA
+ *                                         file into a new engine, destroys
+ *                                         the engines run() let go; one at
+ *                                         a time
  *   work_response()       [audio-thread]  called by the host inside/after run()
  *   instantiate, cleanup,
- *   state save/restore    [main-thread]   never concurrent with run()
+ *   state restore         [main-thread]   never concurrent with run() or work()
+ *   state save            [main-thread]   may run while run() does (state.c)
  * Everything run() reads that the worker writes comes back through
  * work_response; the engine's own rings carry the voices. */
 #ifndef HOST_LV2_PLUGIN_H
 #define HOST_LV2_PLUGIN_H
 
-#include <stdint.h>
-
 #include <stddef.h>
+#include <stdint.h>
 
 #include <lv2/atom/forge.h>
 #include <lv2/core/lv2.h>
@@ -110,9 +113,9 @@ typedef struct work_request {
 /* The longest SOFA path the plugin takes, its terminating zero included. */
 #define SOFA_PATH_BYTES 4096u
 
-/* run() -> work(): a patch:Set of the SOFA file; path_bytes of path are
- * sent (the path and its zero), or none when the path was too long
- * (length then says how long it was). */
+/* run() -> work(): a patch:Set of the SOFA file. Only the path and its
+ * zero are sent (the request is cut after them), or an empty path when it
+ * was too long (length then says how long it was). */
 typedef struct sofa_request {
     request_kind kind;
     uint32_t length;            /* strlen of the path given */
