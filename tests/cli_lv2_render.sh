@@ -2,7 +2,11 @@
 # fulgur-lv2-render on a one-note MIDI file: exit 0, one discharge, a WAV
 # whose peak `fulgur analyze` reads; the same with LV2_PATH relative to the
 # working directory (lilv alone crashes on that); on a file that is not MIDI:
-# exit 2, the message, no WAV. usage: cli_lv2_render.sh FULGUR_LV2_RENDER FULGUR
+# exit 2, the message, no WAV. Every layout's plugin (--layout): binaural
+# two channels unlike stereo's, --sofa naming the same KEMAR set by its
+# other name the same bytes, ambisonics:2 nine channels; a --sofa the plugin
+# refuses, or without binaural: exit 2, the message, no WAV.
+# usage: cli_lv2_render.sh FULGUR_LV2_RENDER FULGUR
 set -u
 render=$1 fulgur=$2
 dir=$(mktemp -d)
@@ -39,4 +43,38 @@ cat "$dir/err"
 [ $rc -eq 2 ] || { echo "far future: expected exit 2, got $rc"; exit 1; }
 grep -q "after the 3600 s a render may reach" "$dir/err" || exit 1
 [ -z "$(ls -A "$dir" | grep far.wav)" ] || { echo "far future: a WAV was left behind"; exit 1; }
+# the layouts
+"$render" "$dir/one.mid" -o "$dir/bin.wav" -t 1 distance=5 gain=-30 --layout binaural ||
+    { echo "binaural render failed"; exit 1; }
+"$fulgur" analyze "$dir/bin.wav" | grep -q ": 2 ch, 48000 Hz, 1.500 s" || { echo "binaural: not 2 channels"; exit 1; }
+cmp -s "$dir/one.wav" "$dir/bin.wav" && { echo "binaural rendered the stereo bytes"; exit 1; }
+"$render" "$dir/one.mid" -o "$dir/kemar.wav" -t 1 distance=5 gain=-30 --layout binaural \
+    --sofa /usr/share/libmysofa/default.sofa || { echo "--sofa default.sofa failed"; exit 1; }
+cmp "$dir/bin.wav" "$dir/kemar.wav" || { echo "the same SOFA set by another name rendered other bytes"; exit 1; }
+"$render" "$dir/one.mid" -o "$dir/amb.wav" -t 1 distance=5 gain=-30 --layout ambisonics:2 ||
+    { echo "ambisonics render failed"; exit 1; }
+"$fulgur" analyze "$dir/amb.wav" | grep -q ": 9 ch, 48000 Hz" || { echo "ambisonics:2: not 9 channels"; exit 1; }
+"$render" "$dir/one.mid" -o "$dir/nosofa.wav" --layout binaural --sofa "$dir/one.mid" 2> "$dir/err"
+rc=$?
+cat "$dir/err"
+[ $rc -eq 2 ] || { echo "a MIDI file as --sofa: expected exit 2, got $rc"; exit 1; }
+grep -q "sofa: $dir/one.mid: not a SOFA file" "$dir/err" || exit 1
+grep -q -- "--sofa $dir/one.mid: the plugin refused it" "$dir/err" || exit 1
+[ ! -e "$dir/nosofa.wav" ] || { echo "a refused --sofa left a WAV"; exit 1; }
+"$render" "$dir/one.mid" -o "$dir/nosofa.wav" --sofa /usr/share/libmysofa/default.sofa 2> "$dir/err"
+rc=$?
+[ $rc -eq 2 ] && grep -q "only with --layout binaural" "$dir/err" || { echo "--sofa without binaural: rc $rc"; cat "$dir/err"; exit 1; }
+# another SOFA set (16 directions, a pulse in each ear, written by ncgen):
+# two channels, not KEMAR's
+if command -v ncgen >/dev/null 2>&1; then
+    tmp=$dir
+    . "$(dirname "$0")/sofa_cdl.sh"
+    sofa pulses 16 2 32 48000
+    "$render" "$dir/one.mid" -o "$dir/pulses.wav" -t 1 distance=5 gain=-30 --layout binaural \
+        --sofa "$dir/pulses.sofa" || { echo "--sofa pulses.sofa failed"; exit 1; }
+    "$fulgur" analyze "$dir/pulses.wav" | grep -q ": 2 ch, 48000 Hz, 1.500 s" || exit 1
+    cmp -s "$dir/bin.wav" "$dir/pulses.wav" && { echo "another SOFA set rendered KEMAR's bytes"; exit 1; }
+else
+    echo "ncgen not found (netcdf-bin): another SOFA set not tried"
+fi
 echo ok

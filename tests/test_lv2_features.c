@@ -42,8 +42,16 @@ static const LV2_Descriptor *descriptor(void **lib)
     assert_non_null(entry);
     const LV2_Descriptor *d = entry(0);
     assert_non_null(d);
-    assert_null(entry(1));
     assert_string_equal(d->URI, FULGUR_LV2_URI);
+    /* one plugin per output layout, then none */
+    static const char *const others[] = {FULGUR_LV2_URI "-binaural", FULGUR_LV2_URI "-ambisonics1",
+                                         FULGUR_LV2_URI "-ambisonics2",
+                                         FULGUR_LV2_URI "-ambisonics3"};
+    for (uint32_t i = 0; i < 4; i++) {
+        assert_non_null(entry(i + 1));
+        assert_string_equal(entry(i + 1)->URI, others[i]);
+    }
+    assert_null(entry(5));
     return d;
 }
 

@@ -2,13 +2,18 @@
 #define _POSIX_C_SOURCE 200809L /* strdup, getcwd */
 #include <limits.h>
 #include <math.h>
+#include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include <lv2/atom/forge.h>
 #include <lv2/atom/util.h>
+#include <lv2/log/log.h>
 #include <lv2/midi/midi.h>
+#include <lv2/patch/patch.h>
 #include <lv2/presets/presets.h>
 #include <lv2/state/state.h>
 #include <lv2/urid/urid.h>
@@ -19,7 +24,7 @@
 #define MAX_PORTS 32
 #define MAX_URIDS 64
 #define MAX_JOBS 64
-#define JOB_BYTES 256
+#define JOB_BYTES 4352 /* a path of 4 KiB and its request */
 #define MIDI_BYTES 4096
 #define MAX_FRAMES 4096
 
@@ -35,16 +40,20 @@ struct lv2_host {
     const LV2_Worker_Interface *worker;
     uint32_t port_count;
     float controls[MAX_PORTS];
-    uint32_t audio_ports[2];
+    uint32_t audio_ports[LV2_HOST_CHANNELS_MAX];
+    unsigned audio_count;
     union { /* LV2 atoms in a sequence are 64-bit aligned */
         _Alignas(8) LV2_Atom_Sequence seq;
-        unsigned char bytes[MIDI_BYTES];
-    } midi;
+        unsigned char bytes[MIDI_BYTES + JOB_BYTES];
+    } midi, notify;
+    uint32_t notify_port; /* NO_PORT if none */
+    char notified[JOB_BYTES], logged[1024];
     LV2_URID_Map map;
     LV2_URID_Unmap unmap;
     LV2_Worker_Schedule schedule;
-    LV2_Feature map_feature, unmap_feature, schedule_feature;
-    const LV2_Feature *features[4];
+    LV2_Log_Log log;
+    LV2_Feature map_feature, unmap_feature, schedule_feature, log_feature;
+    const LV2_Feature *features[5];
     /* requests from run(), and responses from the worker: each list is
      * written by one thread while the other is not running */
     job requests[MAX_JOBS], responses[MAX_JOBS];
@@ -74,6 +83,28 @@ static const char *unmap_uri(LV2_URID_Unmap_Handle handle, LV2_URID urid)
 {
     (void)handle;
     return urid >= 1 && urid <= uri_count ? uris[urid - 1] : NULL;
+}
+
+/* The plugin's log: kept (the last message) and printed to stderr. */
+static int log_vprintf(LV2_Log_Handle handle, LV2_URID type, const char *fmt, va_list ap)
+{
+    (void)type;
+    lv2_host *h = handle;
+    va_list copy;
+    va_copy(copy, ap);
+    int n = vsnprintf(h->logged, sizeof h->logged, fmt, copy);
+    va_end(copy);
+    fputs(h->logged, stderr);
+    return n;
+}
+
+static int log_printf(LV2_Log_Handle handle, LV2_URID type, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int n = log_vprintf(handle, type, fmt, ap);
+    va_end(ap);
+    return n;
 }
 
 /* Copies a job into queue (*count held): no allocation. */
@@ -115,29 +146,41 @@ static uint32_t control_index(const lv2_host *h, const char *symbol)
     return is_control ? lilv_port_get_index(h->plugin, port) : NO_PORT;
 }
 
-/* Every control at its default, the MIDI sequence empty. */
+/* Every control at its default, the MIDI sequence empty; audio outputs in
+ * the order of their indices, an atom output as the notify port. */
 static void connect_ports(lv2_host *h)
 {
     float defaults[MAX_PORTS];
     lilv_plugin_get_port_ranges_float(h->plugin, NULL, NULL, defaults);
     LilvNode *control = lilv_new_uri(h->world, LILV_URI_CONTROL_PORT);
     LilvNode *audio = lilv_new_uri(h->world, LILV_URI_AUDIO_PORT);
-    unsigned audio_seen = 0;
+    LilvNode *output = lilv_new_uri(h->world, LILV_URI_OUTPUT_PORT);
+    h->notify_port = UINT32_MAX;
     for (uint32_t i = 0; i < h->port_count; i++) {
         const LilvPort *port = lilv_plugin_get_port_by_index(h->plugin, i);
         if (lilv_port_is_a(h->plugin, port, control)) {
             h->controls[i] = isnan(defaults[i]) ? 0 : defaults[i];
             lilv_instance_connect_port(h->instance, i, &h->controls[i]);
-        } else if (lilv_port_is_a(h->plugin, port, audio) && audio_seen < 2) {
-            h->audio_ports[audio_seen++] = i;
+        } else if (lilv_port_is_a(h->plugin, port, audio)) {
+            if (h->audio_count < LV2_HOST_CHANNELS_MAX)
+                h->audio_ports[h->audio_count++] = i;
+        } else if (lilv_port_is_a(h->plugin, port, output)) {
+            h->notify_port = i;
+            lilv_instance_connect_port(h->instance, i, &h->notify.seq);
         } else {
             lilv_instance_connect_port(h->instance, i, &h->midi.seq);
         }
     }
     lilv_node_free(control);
     lilv_node_free(audio);
+    lilv_node_free(output);
     h->midi.seq.atom.type = map_uri(h, LV2_ATOM__Sequence);
     lv2_atom_sequence_clear(&h->midi.seq);
+    /* what run() maps, mapped here: it must not allocate */
+    static const char *const run_uris[] = {LV2_ATOM__Chunk, LV2_ATOM__Object, LV2_ATOM__Path,
+                                           LV2_PATCH__Set, LV2_PATCH__value};
+    for (size_t i = 0; i < sizeof run_uris / sizeof run_uris[0]; i++)
+        map_uri(h, run_uris[i]);
 }
 
 /* LV2_PATH for lilv, its relative entries made absolute: lilv 0.24 takes
@@ -184,6 +227,11 @@ static int set_lv2_path(LilvWorld *world)
 
 lv2_host *lv2_host_create(double rate_hz)
 {
+    return lv2_host_create_plugin(FULGUR_LV2_URI, rate_hz);
+}
+
+lv2_host *lv2_host_create_plugin(const char *plugin_uri, double rate_hz)
+{
     lv2_host *h = calloc(1, sizeof *h);
     if (!h || !(h->world = lilv_world_new())) {
         fprintf(stderr, "lv2_host: out of memory\n");
@@ -196,11 +244,11 @@ lv2_host *lv2_host_create(double rate_hz)
         return NULL;
     }
     lilv_world_load_all(h->world);
-    LilvNode *uri = lilv_new_uri(h->world, FULGUR_LV2_URI);
+    LilvNode *uri = lilv_new_uri(h->world, plugin_uri);
     h->plugin = lilv_plugins_get_by_uri(lilv_world_get_all_plugins(h->world), uri);
     lilv_node_free(uri);
     if (!h->plugin) {
-        fprintf(stderr, "lv2_host: %s not found on LV2_PATH=%s\n", FULGUR_LV2_URI,
+        fprintf(stderr, "lv2_host: %s not found on LV2_PATH=%s\n", plugin_uri,
                 getenv("LV2_PATH") ? getenv("LV2_PATH") : "(unset)");
         lv2_host_destroy(h);
         return NULL;
@@ -211,9 +259,12 @@ lv2_host *lv2_host_create(double rate_hz)
     h->map_feature = (LV2_Feature){LV2_URID__map, &h->map};
     h->unmap_feature = (LV2_Feature){LV2_URID__unmap, &h->unmap};
     h->schedule_feature = (LV2_Feature){LV2_WORKER__schedule, &h->schedule};
+    h->log = (LV2_Log_Log){h, log_printf, log_vprintf};
+    h->log_feature = (LV2_Feature){LV2_LOG__log, &h->log};
     h->features[0] = &h->map_feature;
     h->features[1] = &h->unmap_feature;
     h->features[2] = &h->schedule_feature;
+    h->features[3] = &h->log_feature;
     h->port_count = lilv_plugin_get_num_ports(h->plugin);
     if (h->port_count > MAX_PORTS) {
         fprintf(stderr, "lv2_host: %u ports, more than the %d this host holds\n", h->port_count,
@@ -273,10 +324,69 @@ int lv2_host_midi(lv2_host *h, uint32_t frame, uint8_t status, uint8_t data1, ui
                : -1;
 }
 
+unsigned lv2_host_channels(const lv2_host *h) { return h->audio_count; }
+
+int lv2_host_set_path(lv2_host *h, const char *property, const char *path)
+{
+    union {
+        _Alignas(8) LV2_Atom_Event event;
+        uint8_t bytes[JOB_BYTES];
+    } ev;
+    LV2_Atom_Forge forge;
+    LV2_Atom_Forge_Frame set;
+    lv2_atom_forge_init(&forge, &h->map);
+    size_t at = offsetof(LV2_Atom_Event, body);
+    lv2_atom_forge_set_buffer(&forge, ev.bytes + at, sizeof ev - at);
+    ev.event.time.frames = 0;
+    if (!lv2_atom_forge_object(&forge, &set, 0, map_uri(h, LV2_PATCH__Set)) ||
+        !lv2_atom_forge_key(&forge, map_uri(h, LV2_PATCH__property)) ||
+        !lv2_atom_forge_urid(&forge, map_uri(h, property)) ||
+        !lv2_atom_forge_key(&forge, map_uri(h, LV2_PATCH__value)) ||
+        !lv2_atom_forge_path(&forge, path, (uint32_t)strlen(path)))
+        return -1;
+    lv2_atom_forge_pop(&forge, &set);
+    return lv2_atom_sequence_append_event(&h->midi.seq,
+                                          sizeof h->midi - sizeof h->midi.seq.atom, &ev.event)
+               ? 0
+               : -1;
+}
+
+/* The path of each patch:Set on the notify port. */
+static void read_notify(lv2_host *h)
+{
+    LV2_URID set = map_uri(h, LV2_PATCH__Set), value_key = map_uri(h, LV2_PATCH__value);
+    LV2_URID object = map_uri(h, LV2_ATOM__Object), path = map_uri(h, LV2_ATOM__Path);
+    LV2_ATOM_SEQUENCE_FOREACH(&h->notify.seq, ev)
+    {
+        const LV2_Atom_Object *obj = (const LV2_Atom_Object *)&ev->body;
+        if (ev->body.type != object || obj->body.otype != set)
+            continue;
+        const LV2_Atom *value = NULL;
+        lv2_atom_object_get(obj, value_key, &value, 0);
+        if (value && value->type == path)
+            snprintf(h->notified, sizeof h->notified, "%.*s", (int)value->size,
+                     (const char *)LV2_ATOM_BODY_CONST(value));
+    }
+}
+
+const char *lv2_host_notified_path(const lv2_host *h) { return h->notified; }
+const char *lv2_host_last_log(const lv2_host *h) { return h->logged; }
+
 void lv2_host_run(lv2_host *h, uint32_t frames, float *left, float *right)
 {
-    lilv_instance_connect_port(h->instance, h->audio_ports[0], left);
-    lilv_instance_connect_port(h->instance, h->audio_ports[1], right);
+    if (h->audio_count != 2) /* a caller's error: the plugin has other outputs */
+        abort();
+    float *const planes[2] = {left, right};
+    lv2_host_run_planes(h, frames, planes);
+}
+
+void lv2_host_run_planes(lv2_host *h, uint32_t frames, float *const *planes)
+{
+    for (unsigned k = 0; k < h->audio_count; k++)
+        lilv_instance_connect_port(h->instance, h->audio_ports[k], planes[k]);
+    /* an output sequence is handed over with its capacity */
+    h->notify.seq.atom.size = sizeof h->notify - sizeof h->notify.seq.atom;
+    h->notify.seq.atom.type = map_uri(h, LV2_ATOM__Chunk);
     for (unsigned i = 0; i < h->response_count; i++)
         h->worker->work_response(h->instance->lv2_handle, h->responses[i].size,
                                  h->responses[i].data);
@@ -284,6 +394,8 @@ void lv2_host_run(lv2_host *h, uint32_t frames, float *left, float *right)
     h->response_count = 0;
     lilv_instance_run(h->instance, frames);
     lv2_atom_sequence_clear(&h->midi.seq);
+    if (h->notify_port != UINT32_MAX)
+        read_notify(h);
 }
 
 unsigned lv2_host_work(lv2_host *h)

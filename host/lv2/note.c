@@ -61,7 +61,7 @@ static fg_result grow(plugin *p, const work_request *rq, const fg_node **nodes)
 {
     const note_controls *c = &rq->controls;
     fg_listener head;
-    fg_engine_get_listener(p->engine, &head);
+    fg_engine_get_listener(p->slots[p->posting].engine, &head);
     double d = note_distance_m(c->distance_m, rq->note);
     double az = c->azimuth_deg * FG_PI / 180, el = c->elevation_deg * FG_PI / 180;
     /* the listener faces +y with +x on the right and +z up (instantiate) */
@@ -114,5 +114,5 @@ fg_result note_post(plugin *p, const work_request *rq, fg_voice_id *id)
     if (r != FG_OK)
         return r;
     d.node_count = fg_tree_count(p->tree);
-    return fg_engine_post(p->engine, &d, id);
+    return fg_engine_post(p->slots[p->posting].engine, &d, id);
 }

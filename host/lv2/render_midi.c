@@ -10,8 +10,10 @@
 
 #include "common/audio_file.h"
 #include "common/options.h"
+#include "common/sofa_hrir.h"
 #include "common/temp_file.h"
 #include "lilv_host.h"
+#include "scene/scene.h"
 #include "smf.h"
 
 #define BLOCK 256
@@ -20,7 +22,8 @@
 #define RENDER_MAX_EVENT_S 3600.0
 
 static const char about[] =
-    "Plays IN.mid through fulgur.lv2 and writes a stereo 32-bit float WAV. SYMBOL=VALUE\n"
+    "Plays IN.mid through fulgur.lv2 and writes a 32-bit float WAV of the plugin's\n"
+    "outputs: 2 (stereo, binaural) or 4, 9, 16 (ambisonics, ACN order, SN3D). SYMBOL=VALUE\n"
     "sets a control port, e.g. preset=2 distance=3000 gain=-50 (see fulgur.ttl).\n";
 
 static const char notes[] = "Exit: 0 done, 1 runtime error, 2 bad arguments or MIDI file.\n";
@@ -29,6 +32,8 @@ static const char notes[] = "Exit: 0 done, 1 runtime error, 2 bad arguments or M
 
 typedef struct options {
     const char *in, *out;
+    scene_layout_choice layout; /* the plugin played */
+    const char *sofa;
     double rate_hz, tail_s;
     const char *controls[MAX_CONTROLS];
     size_t control_count;
@@ -45,6 +50,12 @@ static int parse_args(int argc, char **argv, options *o)
         {"-t", OPTION_NUMBER, &o->tail_s, "TAIL_S",
          .help = "seconds rendered after the last MIDI event (default 5)",
          .range = {.lo = 0, .hi = 3600}},
+        {"--layout", OPTION_PARSED, &o->layout, "LAYOUT", .parse = scene_layout_option,
+         .help = "the plugin played: stereo (default), binaural or\n"
+                 "ambisonics:ORDER (1..3: 4, 9 or 16 channels)"},
+        {"--sofa", OPTION_TEXT, &o->sofa, "FILE",
+         .help = "the binaural plugin's SOFA file, set through its parameter\n"
+                 "(default " SOFA_DEFAULT_FILE ")"},
         {0},
     };
     const command_line cl = {"fulgur-lv2-render", "IN.mid [SYMBOL=VALUE]...", 1,
@@ -66,6 +77,45 @@ static int parse_args(int argc, char **argv, options *o)
     }
     if (!o->in)
         return options_fail(&cl, "give IN.mid"), -1;
+    if (o->sofa && o->layout.layout.layout != FG_LAYOUT_BINAURAL)
+        return options_fail(&cl, "--sofa %s: only with --layout binaural", o->sofa), -1;
+    return 0;
+}
+
+/* The plugin of the layout asked for. */
+static lv2_host *open_plugin(const options *o)
+{
+    char uri[256];
+    scene_layout l = o->layout.layout;
+    snprintf(uri, sizeof uri, "%s%s", FULGUR_LV2_URI,
+             l.layout == FG_LAYOUT_BINAURAL ? "-binaural" : "");
+    if (l.layout == FG_LAYOUT_AMBISONICS)
+        snprintf(uri, sizeof uri, "%s-ambisonics%u", FULGUR_LV2_URI, l.order);
+    return lv2_host_create_plugin(uri, o->rate_hz);
+}
+
+/* --sofa through the plugin's parameter, before the first frame: the
+ * worker reads it between two runs of no frames. Returns 0, or -1 when the
+ * plugin refused the file (its message is on stderr, from its log). */
+static int set_sofa(lv2_host *h, const char *sofa)
+{
+    if (!sofa)
+        return 0;
+    if (lv2_host_set_path(h, FULGUR_LV2_URI "#sofa", sofa) != 0) {
+        fprintf(stderr, "fulgur-lv2-render: --sofa %s: a path too long\n", sofa);
+        return -1;
+    }
+    static float none[1];
+    float *planes[LV2_HOST_CHANNELS_MAX];
+    for (unsigned k = 0; k < LV2_HOST_CHANNELS_MAX; k++)
+        planes[k] = none;
+    lv2_host_run_planes(h, 0, planes);
+    lv2_host_work(h);
+    lv2_host_run_planes(h, 0, planes);
+    if (strcmp(lv2_host_notified_path(h), sofa) != 0) {
+        fprintf(stderr, "fulgur-lv2-render: --sofa %s: the plugin refused it\n", sofa);
+        return -1;
+    }
     return 0;
 }
 
@@ -103,8 +153,11 @@ static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz
                   SNDFILE *wav)
 {
     uint64_t frames = render_frames(ev, count, rate_hz, tail_s), next = 0;
-    float left[BLOCK], right[BLOCK], frame[2 * BLOCK];
-    float *const planes[2] = {left, right};
+    unsigned channels = lv2_host_channels(h);
+    static float plane[LV2_HOST_CHANNELS_MAX][BLOCK], frame[LV2_HOST_CHANNELS_MAX * BLOCK];
+    float *planes[LV2_HOST_CHANNELS_MAX];
+    for (unsigned k = 0; k < channels; k++)
+        planes[k] = plane[k];
     for (uint64_t start = 0; start < frames; start += BLOCK) {
         uint32_t n = frames - start < BLOCK ? (uint32_t)(frames - start) : BLOCK;
         for (; next < count && (uint64_t)(ev[next].time_s * rate_hz) < start + n; next++) {
@@ -116,9 +169,9 @@ static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz
                 return -1;
             }
         }
-        lv2_host_run(h, n, left, right);
+        lv2_host_run_planes(h, n, planes);
         lv2_host_work(h);
-        audio_interleave(planes, 2, n, 1, frame);
+        audio_interleave(planes, channels, n, 1, frame);
         if (sf_writef_float(wav, frame, n) != n) {
             fprintf(stderr, "fulgur-lv2-render: writing: %s\n", sf_strerror(wav));
             return -1;
@@ -158,8 +211,8 @@ int main(int argc, char **argv)
         free(events);
         return 2;
     }
-    lv2_host *h = lv2_host_create(o.rate_hz);
-    if (!h || set_controls(h, &o)) {
+    lv2_host *h = open_plugin(&o);
+    if (!h || set_controls(h, &o) || set_sofa(h, o.sofa)) {
         lv2_host_destroy(h);
         free(events);
         return h ? 2 : 1;
@@ -171,7 +224,7 @@ int main(int argc, char **argv)
         free(events);
         return 1;
     }
-    SNDFILE *wav = audio_wav_open(out.fd, o.out, o.rate_hz, 2,
+    SNDFILE *wav = audio_wav_open(out.fd, o.out, o.rate_hz, lv2_host_channels(h),
                                   render_frames(events, count, o.rate_hz, o.tail_s), err,
                                   sizeof err);
     int ok = wav && render(h, events, count, o.rate_hz, o.tail_s, wav) == 0;
