@@ -9,9 +9,13 @@
 
 #include "hrir_equalize.h"
 
-/* FFTW's planner is not thread-safe; scenes may be loaded on threads at
- * once (the Python package). */
-static pthread_mutex_t planner = PTHREAD_MUTEX_INITIALIZER;
+/* FFTW's planner is not thread-safe by itself: scenes may be loaded on
+ * threads at once (the Python package), and the LV2 plugin's worker plans
+ * while other plugins in the same host may. FFTW's own lock
+ * (fftw_make_planner_thread_safe, FFTW 3.3.5, libfftw3_threads) guards
+ * every planner call in the process once it is installed, ours and
+ * theirs. */
+static pthread_once_t planner_lock = PTHREAD_ONCE_INIT;
 
 #define PI 3.14159265358979323846
 
@@ -29,12 +33,10 @@ typedef struct eq_work {
 
 static void work_free(eq_work *w)
 {
-    pthread_mutex_lock(&planner);
     if (w->forward)
         fftw_destroy_plan(w->forward);
     if (w->inverse)
         fftw_destroy_plan(w->inverse);
-    pthread_mutex_unlock(&planner);
     fftw_free(w->time);
     fftw_free(w->freq);
 }
@@ -49,10 +51,9 @@ static int work_init(eq_work *w, size_t length)
     w->freq = fftw_alloc_complex(w->bins);
     if (!w->time || !w->freq)
         return -1;
-    pthread_mutex_lock(&planner);
+    pthread_once(&planner_lock, fftw_make_planner_thread_safe);
     w->forward = fftw_plan_dft_r2c_1d((int)w->n, w->time, w->freq, FFTW_ESTIMATE);
     w->inverse = fftw_plan_dft_c2r_1d((int)w->n, w->freq, w->time, FFTW_ESTIMATE);
-    pthread_mutex_unlock(&planner);
     return w->forward && w->inverse ? 0 : -1;
 }
 
