@@ -28,6 +28,7 @@ void fg_convolver_deinit(fg_convolver *c)
     free(c->in);
     free(c->out);
     free(c->acc);
+    free(c->pairs);
     free(c->lanes);
     free(c->work);
     memset(c, 0, sizeof *c);
@@ -82,10 +83,11 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
     c->quiet = calloc(inputs, sizeof *c->quiet);
     c->in = alloc_floats((size_t)inputs * n);
     c->out = alloc_floats((size_t)outputs * block);
-    c->acc = alloc_floats((size_t)outputs * n);
+    c->acc = alloc_floats((size_t)(outputs + 1) * n);
+    c->pairs = malloc(2 * P * sizeof *c->pairs);
     c->lanes = alloc_floats(n * V);
     c->work = alloc_floats(n * V);
-    if (!c->filter || !c->history || !c->live || !c->quiet || !c->in || !c->out || !c->acc ||
+    if (!c->filter || !c->history || !c->live || !c->quiet || !c->in || !c->out || !c->acc || !c->pairs ||
         !c->lanes || !c->work || !transform_filter(c, length, filter)) {
         fg_convolver_deinit(c);
         return false;
@@ -95,9 +97,20 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
     return true;
 }
 
+/* Whether x[0 .. n) is all zero (-0 included), FG_VF_LANES at a time. */
 static bool all_zero(const float *x, size_t n)
 {
-    for (size_t k = 0; k < n; k++)
+    size_t k = 0;
+    for (; k + 4 * V <= n; k += 4 * V) {
+        fg_vi nz = (fg_vf_load(x + k) != 0.0f) | (fg_vf_load(x + k + V) != 0.0f) |
+                   (fg_vf_load(x + k + 2 * V) != 0.0f) | (fg_vf_load(x + k + 3 * V) != 0.0f);
+        int32_t lane[V];
+        memcpy(lane, &nz, sizeof lane);
+        for (unsigned l = 0; l < V; l++)
+            if (lane[l])
+                return false;
+    }
+    for (; k < n; k++)
         if (x[k] != 0.0f)
             return false;
     return true;
@@ -119,26 +132,55 @@ static void forward_batch(fg_convolver *c, const unsigned *who, unsigned count)
     }
 }
 
-/* acc += x h over the B packed bins (fft_lanes_internal.h): complex
- * products, but X[0] and X[B], both real, multiply on their own. */
-static void multiply_add(float *restrict acc, const float *restrict x, const float *restrict h,
-                         size_t B)
+/* acc0 += sum_j x[j] (h[j] + off0) and acc1 += sum_j x[j] (h[j] + off1) over the
+ * B packed bins (fft_lanes_internal.h): complex products, but X[0] and
+ * X[B], both real, multiply on their own. The sums stay in registers
+ * across the count pairs, and each x[j] is loaded once for both. */
+static void multiply_add(float *restrict acc0, float *restrict acc1, const float *const *x,
+                         const float *const *h, size_t off0, size_t off1, size_t count, size_t B)
 {
-    float dc = acc[0] + x[0] * h[0], nyquist = acc[B] + x[B] * h[B];
+    /* bins 0 and B are redone at the end: the vectors take them as complex */
+    float dc0 = acc0[0], ny0 = acc0[B], dc1 = acc1[0], ny1 = acc1[B];
     size_t k = 0;
     for (; k + V <= B; k += V) {
-        fg_vf xr = fg_vf_load(x + k), xi = fg_vf_load(x + B + k);
-        fg_vf hr = fg_vf_load(h + k), hi = fg_vf_load(h + B + k);
-        fg_vf_store(acc + k, fg_vf_load(acc + k) + (xr * hr - xi * hi));
-        fg_vf_store(acc + B + k, fg_vf_load(acc + B + k) + (xr * hi + xi * hr));
+        fg_vf a0r = fg_vf_load(acc0 + k), a0i = fg_vf_load(acc0 + B + k);
+        fg_vf a1r = fg_vf_load(acc1 + k), a1i = fg_vf_load(acc1 + B + k);
+        for (size_t j = 0; j < count; j++) {
+            const float *h0 = h[j] + off0, *h1 = h[j] + off1;
+            fg_vf xr = fg_vf_load(x[j] + k), xi = fg_vf_load(x[j] + B + k);
+            fg_vf hr = fg_vf_load(h0 + k), hi = fg_vf_load(h0 + B + k);
+            a0r += xr * hr - xi * hi;
+            a0i += xr * hi + xi * hr;
+            hr = fg_vf_load(h1 + k);
+            hi = fg_vf_load(h1 + B + k);
+            a1r += xr * hr - xi * hi;
+            a1i += xr * hi + xi * hr;
+        }
+        fg_vf_store(acc0 + k, a0r);
+        fg_vf_store(acc0 + B + k, a0i);
+        fg_vf_store(acc1 + k, a1r);
+        fg_vf_store(acc1 + B + k, a1i);
     }
-    for (; k < B; k++) {
-        float xr = x[k], xi = x[B + k], hr = h[k], hi = h[B + k];
-        acc[k] += xr * hr - xi * hi;
-        acc[B + k] += xr * hi + xi * hr;
+    for (; k < B; k++)
+        for (size_t j = 0; j < count; j++) {
+            const float *h0 = h[j] + off0, *h1 = h[j] + off1;
+            float xr = x[j][k], xi = x[j][B + k];
+            acc0[k] += xr * h0[k] - xi * h0[B + k];
+            acc0[B + k] += xr * h0[B + k] + xi * h0[k];
+            acc1[k] += xr * h1[k] - xi * h1[B + k];
+            acc1[B + k] += xr * h1[B + k] + xi * h1[k];
+        }
+    for (size_t j = 0; j < count; j++) {
+        const float *h0 = h[j] + off0, *h1 = h[j] + off1;
+        dc0 += x[j][0] * h0[0];
+        ny0 += x[j][B] * h0[B];
+        dc1 += x[j][0] * h1[0];
+        ny1 += x[j][B] * h1[B];
     }
-    acc[0] = dc;
-    acc[B] = nyquist;
+    acc0[0] = dc0;
+    acc0[B] = ny0;
+    acc1[0] = dc1;
+    acc1[B] = ny1;
 }
 
 /* The outputs' spectra in c->acc back to time: the second half of each
@@ -199,18 +241,24 @@ static void run_block(fg_convolver *c)
         memset(c->out, 0, O * B * sizeof *c->out);
         return;
     }
-    memset(c->acc, 0, O * n * sizeof *c->acc);
+    memset(c->acc, 0, (O + 1) * n * sizeof *c->acc);
+    const float **x = c->pairs, **h = c->pairs + P;
     for (unsigned i = 0; i < c->inputs; i++) {
         if (c->quiet[i] > P)
             continue; /* its whole history is zero */
+        size_t slots = 0;
         for (size_t p = 0; p < P; p++) {
             size_t slot = (c->newest + P - p) % P;
             if (!c->live[(size_t)i * P + slot])
                 continue; /* a block of silence p blocks ago */
-            const float *x = c->history + ((size_t)i * P + slot) * n;
-            const float *h = c->filter + ((size_t)i * P + p) * O * n;
-            for (size_t o = 0; o < O; o++)
-                multiply_add(c->acc + o * n, x, h + o * n, B);
+            x[slots] = c->history + ((size_t)i * P + slot) * n;
+            h[slots++] = c->filter + ((size_t)i * P + p) * O * n;
+        }
+        /* outputs two at a time; an odd last one pairs with the spare */
+        for (size_t o = 0; o < O; o += 2) {
+            size_t o1 = o + 1 < O ? o + 1 : O;
+            multiply_add(c->acc + o * n, c->acc + o1 * n, x, h, o * n, (o1 < O ? o1 : o) * n, slots,
+                         B);
         }
     }
     inverse_outputs(c);

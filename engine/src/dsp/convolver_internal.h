@@ -51,7 +51,8 @@ typedef struct fg_convolver {
     size_t *quiet;        /* [input]: blocks since the input was last non-zero */
     float *in;            /* [input][2B]: the previous block and the one being filled */
     float *out;           /* [output][B]: the block being played */
-    float *acc;           /* [output][2B]: the outputs' spectra */
+    float *acc;           /* [output + 1][2B]: the outputs' spectra, and a spare */
+    const float **pairs;  /* 2P: an input's live history slots, then their filters */
     float *lanes, *work;  /* 2B * FG_VF_LANES each: the signals being transformed */
     size_t fill;          /* frames of the current block taken so far */
 } fg_convolver;
