@@ -72,6 +72,7 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
     if (inputs == 0 || outputs == 0 || length == 0 || !filter || block < 2 || block > BLOCK_MAX ||
         (block & (block - 1)) != 0 || !fg_fft_lanes_init(&c->fft, 2 * block))
         return false;
+    c->mac = fg_spectrum_mac_pick(block);
     c->inputs = inputs;
     c->outputs = outputs;
     c->block = block;
@@ -130,57 +131,6 @@ static void forward_batch(fg_convolver *c, const unsigned *who, unsigned count)
         for (size_t e = 0; e < n; e++)
             slot[e] = c->lanes[e * V + l];
     }
-}
-
-/* acc0 += sum_j x[j] (h[j] + off0) and acc1 += sum_j x[j] (h[j] + off1) over the
- * B packed bins (fft_lanes_internal.h): complex products, but X[0] and
- * X[B], both real, multiply on their own. The sums stay in registers
- * across the count pairs, and each x[j] is loaded once for both. */
-static void multiply_add(float *restrict acc0, float *restrict acc1, const float *const *x,
-                         const float *const *h, size_t off0, size_t off1, size_t count, size_t B)
-{
-    /* bins 0 and B are redone at the end: the vectors take them as complex */
-    float dc0 = acc0[0], ny0 = acc0[B], dc1 = acc1[0], ny1 = acc1[B];
-    size_t k = 0;
-    for (; k + V <= B; k += V) {
-        fg_vf a0r = fg_vf_load(acc0 + k), a0i = fg_vf_load(acc0 + B + k);
-        fg_vf a1r = fg_vf_load(acc1 + k), a1i = fg_vf_load(acc1 + B + k);
-        for (size_t j = 0; j < count; j++) {
-            const float *h0 = h[j] + off0, *h1 = h[j] + off1;
-            fg_vf xr = fg_vf_load(x[j] + k), xi = fg_vf_load(x[j] + B + k);
-            fg_vf hr = fg_vf_load(h0 + k), hi = fg_vf_load(h0 + B + k);
-            a0r += xr * hr - xi * hi;
-            a0i += xr * hi + xi * hr;
-            hr = fg_vf_load(h1 + k);
-            hi = fg_vf_load(h1 + B + k);
-            a1r += xr * hr - xi * hi;
-            a1i += xr * hi + xi * hr;
-        }
-        fg_vf_store(acc0 + k, a0r);
-        fg_vf_store(acc0 + B + k, a0i);
-        fg_vf_store(acc1 + k, a1r);
-        fg_vf_store(acc1 + B + k, a1i);
-    }
-    for (; k < B; k++)
-        for (size_t j = 0; j < count; j++) {
-            const float *h0 = h[j] + off0, *h1 = h[j] + off1;
-            float xr = x[j][k], xi = x[j][B + k];
-            acc0[k] += xr * h0[k] - xi * h0[B + k];
-            acc0[B + k] += xr * h0[B + k] + xi * h0[k];
-            acc1[k] += xr * h1[k] - xi * h1[B + k];
-            acc1[B + k] += xr * h1[B + k] + xi * h1[k];
-        }
-    for (size_t j = 0; j < count; j++) {
-        const float *h0 = h[j] + off0, *h1 = h[j] + off1;
-        dc0 += x[j][0] * h0[0];
-        ny0 += x[j][B] * h0[B];
-        dc1 += x[j][0] * h1[0];
-        ny1 += x[j][B] * h1[B];
-    }
-    acc0[0] = dc0;
-    acc0[B] = ny0;
-    acc1[0] = dc1;
-    acc1[B] = ny1;
 }
 
 /* The outputs' spectra in c->acc back to time: the second half of each
@@ -257,7 +207,7 @@ static void run_block(fg_convolver *c)
         /* outputs two at a time; an odd last one pairs with the spare */
         for (size_t o = 0; o < O; o += 2) {
             size_t o1 = o + 1 < O ? o + 1 : O;
-            multiply_add(c->acc + o * n, c->acc + o1 * n, x, h, o * n, (o1 < O ? o1 : o) * n, slots,
+            c->mac(c->acc + o * n, c->acc + o1 * n, x, h, o * n, (o1 < O ? o1 : o) * n, slots,
                          B);
         }
     }

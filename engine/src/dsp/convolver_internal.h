@@ -37,12 +37,14 @@
 
 #include "fft_internal.h"
 #include "fft_lanes_internal.h"
+#include "spectrum_mac_internal.h"
 
 typedef struct fg_convolver {
     unsigned inputs, outputs;
     size_t block;         /* B, a power of two >= 2 */
     size_t partitions;    /* P */
     fg_fft_lanes fft;     /* 2B points */
+    fg_spectrum_mac_fn mac; /* the multiply-add kernel for this CPU */
     float *filter;        /* [input][partition][output][2B]: packed spectra */
     float *history;       /* [input][slot][2B]: the inputs' last P block spectra */
     unsigned char *live;  /* [input][slot]: the slot's block had sound (else its spectrum is
