@@ -14,12 +14,14 @@
  *    Im X[k], and element N/2 holds X[N/2], real like X[0].
  * inverse(forward(x)) = x (the inverse carries the 1/N).
  *
- * The complex N/2-point transform is a radix-2 Stockham autosort (no
+ * The complex N/2-point transform is a Stockham autosort (no
  * bit-reversal pass: each stage writes its outputs in the order the next
- * reads them), ping-ponging with a caller's work array, with the
- * twiddles of each stage stored contiguously and computed directly in
- * double (cos, sin of each angle), then rounded; then the usual split
- * of a real transform into its even and odd halves.
+ * reads them) of radix 4, with one radix-2 stage first when log2(N/2) is
+ * odd, ping-ponging with a caller's work array; the twiddles of each stage
+ * are stored contiguously, computed directly in double (cos, sin of each
+ * angle) and rounded, and the first butterfly of a stage (twiddles 1) is
+ * not multiplied. Then the usual split of a real transform into its even
+ * and odd halves; the inverse runs the forward stages on the conjugate.
  *
  * [main-thread] init allocates; forward and inverse never allocate, and
  * one plan may serve several threads at once (it is read-only). */
@@ -33,8 +35,11 @@
 
 typedef struct fg_fft_lanes {
     size_t n;         /* real length N */
-    float *twiddle;   /* per stage of length L = N/2, N/4 .. 2: cos of 2 pi j / L,
-                         j < L/2, then sin; 2 (N/2 - 1) floats */
+    bool radix2;      /* log2(N/2) is odd: a radix-2 stage comes first */
+    size_t stages;
+    float *twiddle;   /* per stage of length L (N/2, then down by its radix): the
+                         radix-2 one cos then sin of 2 pi j / L, j < L/2; a radix-4
+                         one cos then sin of 2 pi j k / L, j < L/4, for k = 1, 2, 3 */
     float *split;     /* cos, sin of 2 pi k / N, k <= N/4: the real split */
 } fg_fft_lanes;
 
