@@ -31,6 +31,7 @@ void fg_convolver_deinit(fg_convolver *c)
     free(c->pairs);
     free(c->lanes);
     free(c->work);
+    free(c->zeros);
     memset(c, 0, sizeof *c);
 }
 
@@ -88,8 +89,9 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
     c->pairs = malloc(2 * P * sizeof *c->pairs);
     c->lanes = alloc_floats(n * V);
     c->work = alloc_floats(n * V);
+    c->zeros = alloc_floats(n);
     if (!c->filter || !c->history || !c->live || !c->quiet || !c->in || !c->out || !c->acc || !c->pairs ||
-        !c->lanes || !c->work || !transform_filter(c, length, filter)) {
+        !c->lanes || !c->work || !c->zeros || !transform_filter(c, length, filter)) {
         fg_convolver_deinit(c);
         return false;
     }
@@ -117,20 +119,73 @@ static bool all_zero(const float *x, size_t n)
     return true;
 }
 
-/* The forward transforms of the inputs in who[0 .. count), whose split
- * windows are in c->lanes, into their newest history slots. */
-static void forward_batch(fg_convolver *c, const unsigned *who, unsigned count)
+/* Lane l of c->lanes gets the window win[l] (2B frames) split: frame 2k
+ * as element k, frame 2k + 1 as element B + k. */
+static void gather_windows(fg_convolver *c, const float *const *win)
+{
+    const size_t B = c->block;
+#ifdef FG_VF_SHUFFLE
+    if (B % V == 0) {
+        for (size_t k = 0; k < B; k += V) {
+            fg_vf even[V], odd[V];
+            for (unsigned l = 0; l < V; l++) {
+                fg_vf a = fg_vf_load(win[l] + 2 * k), b = fg_vf_load(win[l] + 2 * k + V);
+                even[l] = fg_vf_even(a, b);
+                odd[l] = fg_vf_odd(a, b);
+            }
+            fg_vf_transpose(even);
+            fg_vf_transpose(odd);
+            for (unsigned j = 0; j < V; j++) {
+                fg_vf_store(c->lanes + (k + j) * V, even[j]);
+                fg_vf_store(c->lanes + (B + k + j) * V, odd[j]);
+            }
+        }
+        return;
+    }
+#endif
+    for (unsigned l = 0; l < V; l++)
+        for (size_t k = 0; k < B; k++) {
+            c->lanes[k * V + l] = win[l][2 * k];
+            c->lanes[(B + k) * V + l] = win[l][2 * k + 1];
+        }
+}
+
+/* dst[l][0 .. 2B) = lane l of c->lanes, l < count. */
+static void scatter_lanes(const fg_convolver *c, float *const *dst, unsigned count)
 {
     const size_t n = 2 * c->block;
-    for (unsigned l = count; l < V; l++)
-        for (size_t e = 0; e < n; e++)
-            c->lanes[e * V + l] = 0.0f;
-    fg_fft_lanes_forward(&c->fft, c->lanes, c->work);
-    for (unsigned l = 0; l < count; l++) {
-        float *slot = c->history + ((size_t)who[l] * c->partitions + c->newest) * n;
-        for (size_t e = 0; e < n; e++)
-            slot[e] = c->lanes[e * V + l];
+#ifdef FG_VF_SHUFFLE
+    for (size_t e = 0; e < n; e += V) { /* n = 2B >= 4 */
+        fg_vf r[V];
+        for (unsigned j = 0; j < V; j++)
+            r[j] = fg_vf_load(c->lanes + (e + j) * V);
+        fg_vf_transpose(r);
+        for (unsigned l = 0; l < count; l++)
+            fg_vf_store(dst[l] + e, r[l]);
     }
+#else
+    for (unsigned l = 0; l < count; l++)
+        for (size_t e = 0; e < n; e++)
+            dst[l][e] = c->lanes[e * V + l];
+#endif
+}
+
+/* The forward transforms of the inputs in who[0 .. count) into their
+ * newest history slots; then their windows move on by a block. */
+static void forward_batch(fg_convolver *c, const unsigned *who, unsigned count)
+{
+    const size_t B = c->block, n = 2 * B;
+    const float *win[V];
+    float *slot[V];
+    for (unsigned l = 0; l < V; l++)
+        win[l] = l < count ? c->in + (size_t)who[l] * n : c->zeros;
+    gather_windows(c, win);
+    fg_fft_lanes_forward(&c->fft, c->lanes, c->work);
+    for (unsigned l = 0; l < count; l++)
+        slot[l] = c->history + ((size_t)who[l] * c->partitions + c->newest) * n;
+    scatter_lanes(c, slot, count);
+    for (unsigned l = 0; l < count; l++)
+        memcpy(c->in + (size_t)who[l] * n, c->in + (size_t)who[l] * n + B, B * sizeof(float));
 }
 
 /* The outputs' spectra in c->acc back to time: the second half of each
@@ -171,18 +226,13 @@ static void run_block(fg_convolver *c)
         c->quiet[i] = all_zero(x + B, B) ? (c->quiet[i] < P + 2 ? c->quiet[i] + 1 : P + 2) : 0;
         bool live = c->quiet[i] <= 1;
         c->live[(size_t)i * P + c->newest] = live;
-        if (live) {
-            for (size_t k = 0; k < B; k++) { /* the window, split */
-                c->lanes[k * V + count] = x[2 * k];
-                c->lanes[(B + k) * V + count] = x[2 * k + 1];
-            }
+        if (live) { /* (else both halves of its window are zero already) */
             who[count++] = i;
             if (count == V) {
                 forward_batch(c, who, count);
                 count = 0;
             }
         }
-        memcpy(x, x + B, B * sizeof *x);
         any = any || c->quiet[i] <= P;
     }
     if (count > 0)
