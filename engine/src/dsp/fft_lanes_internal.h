@@ -36,7 +36,7 @@
 typedef struct fg_fft_lanes {
     size_t n;         /* real length N */
     bool radix2;      /* log2(N/2) is odd: a radix-2 stage comes first */
-    size_t stages;
+    size_t stages;    /* radix-2 and radix-4 stages in all */
     float *twiddle;   /* per stage of length L (N/2, then down by its radix): the
                          radix-2 one cos then sin of 2 pi j / L, j < L/2; a radix-4
                          one cos then sin of 2 pi j k / L, j < L/4, for k = 1, 2, 3 */
