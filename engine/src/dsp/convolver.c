@@ -170,6 +170,26 @@ static void scatter_lanes(const fg_convolver *c, float *const *dst, unsigned cou
 #endif
 }
 
+/* Lane l of c->lanes = src[l][0 .. 2B), l < FG_VF_LANES. */
+static void fill_lanes(fg_convolver *c, const float *const *src)
+{
+    const size_t n = 2 * c->block;
+#ifdef FG_VF_SHUFFLE
+    for (size_t e = 0; e < n; e += V) {
+        fg_vf r[V];
+        for (unsigned l = 0; l < V; l++)
+            r[l] = fg_vf_load(src[l] + e);
+        fg_vf_transpose(r);
+        for (unsigned j = 0; j < V; j++)
+            fg_vf_store(c->lanes + (e + j) * V, r[j]);
+    }
+#else
+    for (unsigned l = 0; l < V; l++)
+        for (size_t e = 0; e < n; e++)
+            c->lanes[e * V + l] = src[l][e];
+#endif
+}
+
 /* The forward transforms of the inputs in who[0 .. count) into their
  * newest history slots; then their windows move on by a block. */
 static void forward_batch(fg_convolver *c, const unsigned *who, unsigned count)
@@ -195,18 +215,21 @@ static void inverse_outputs(fg_convolver *c)
     const size_t B = c->block, n = 2 * B;
     for (unsigned o0 = 0; o0 < c->outputs; o0 += V) {
         unsigned count = c->outputs - o0 < V ? c->outputs - o0 : V;
+        const float *spectra[V];
+        float *time[V];
         for (unsigned l = 0; l < V; l++) {
-            const float *acc = l < count ? c->acc + (size_t)(o0 + l) * n : NULL;
-            for (size_t e = 0; e < n; e++)
-                c->lanes[e * V + l] = acc ? acc[e] : 0.0f;
+            time[l] = l < count ? c->acc + (size_t)(o0 + l) * n : NULL;
+            spectra[l] = l < count ? time[l] : c->zeros;
         }
+        fill_lanes(c, spectra);
         fg_fft_lanes_inverse(&c->fft, c->lanes, c->work);
+        scatter_lanes(c, time, count); /* each window, split, where its spectrum was */
         /* sample s of the window is element s / 2 (even s) or B + s / 2 */
         for (unsigned l = 0; l < count; l++) {
             float *y = c->out + (size_t)(o0 + l) * B;
             for (size_t k = B / 2; k < B; k++) {
-                y[2 * k - B] = c->lanes[k * V + l];
-                y[2 * k + 1 - B] = c->lanes[(B + k) * V + l];
+                y[2 * k - B] = time[l][k];
+                y[2 * k + 1 - B] = time[l][B + k];
             }
         }
     }
