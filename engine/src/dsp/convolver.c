@@ -201,8 +201,8 @@ static void forward_batch(fg_convolver *c, const unsigned *who, unsigned count)
         win[l] = l < count ? c->in + (size_t)who[l] * n : c->zeros;
     gather_windows(c, win);
     fg_fft_lanes_forward(&c->fft, c->lanes, c->work);
-    for (unsigned l = 0; l < count; l++)
-        slot[l] = c->history + ((size_t)who[l] * c->partitions + c->newest) * n;
+    for (unsigned l = 0; l < V; l++) /* lanes past count are not written */
+        slot[l] = l < count ? c->history + ((size_t)who[l] * c->partitions + c->newest) * n : NULL;
     scatter_lanes(c, slot, count);
     for (unsigned l = 0; l < count; l++)
         memcpy(c->in + (size_t)who[l] * n, c->in + (size_t)who[l] * n + B, B * sizeof(float));
