@@ -101,6 +101,8 @@ static void process_portable(fg_iir *const *f, float *const *buf, unsigned count
 }
 
 #if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+
 /* The helpers of process_avx2, built for AVX2 (a 256-bit vector passed
  * between functions of another target would change the ABI). */
 #define AVX2_INLINE static inline __attribute__((always_inline, target("avx2")))
@@ -158,13 +160,62 @@ AVX2_INLINE void run_section_pair(lanes_section *s,
     *u = v;
 }
 
+/* Runs sections s[0..4) over x[0..m) in place, each a sample behind the
+ * one before it: four recurrences that do not wait for each other. */
+AVX2_INLINE void run_section_quad(lanes_section *s, lanes_v *x, size_t m)
+{
+    lanes_section a = s[0], b = s[1], c = s[2], d = s[3];
+    for (size_t i = 0; i < m + 3; i++) {
+        if (i >= 3 && i - 3 < m)
+            x[i - 3] = section_step(&d, x[i - 3]);
+        if (i >= 2 && i - 2 < m)
+            x[i - 2] = section_step(&c, x[i - 2]);
+        if (i >= 1 && i - 1 < m)
+            x[i - 1] = section_step(&b, x[i - 1]);
+        if (i < m)
+            x[i] = section_step(&a, x[i]);
+    }
+    s[0] = a;
+    s[1] = b;
+    s[2] = c;
+    s[3] = d;
+}
+
 #define CHUNK 64 /* frames per pass through the sections */
+
+/* Zeros for the lanes past count to read. */
+static const float silence[CHUNK];
+
+/* x[t], t < 4: frame i + t of the four planes in[0..4), as doubles (a
+ * 4 x 4 transpose of floats, then exact conversions). */
+AVX2_INLINE void planes_to_lanes(const float *const *in, size_t i, lanes_v *x)
+{
+    __m128 r0 = _mm_loadu_ps(in[0] + i), r1 = _mm_loadu_ps(in[1] + i);
+    __m128 r2 = _mm_loadu_ps(in[2] + i), r3 = _mm_loadu_ps(in[3] + i);
+    _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+    x[0] = (lanes_v)_mm256_cvtps_pd(r0);
+    x[1] = (lanes_v)_mm256_cvtps_pd(r1);
+    x[2] = (lanes_v)_mm256_cvtps_pd(r2);
+    x[3] = (lanes_v)_mm256_cvtps_pd(r3);
+}
+
+/* The reverse: x[0..4) rounded to float (as a scalar cast rounds) into
+ * frames at .. at + 4 of the planes buf[0..count). */
+AVX2_INLINE void lanes_to_planes(const lanes_v *x, float *const *buf, size_t at, unsigned count)
+{
+    __m128 r0 = _mm256_cvtpd_ps((__m256d)x[0]), r1 = _mm256_cvtpd_ps((__m256d)x[1]);
+    __m128 r2 = _mm256_cvtpd_ps((__m256d)x[2]), r3 = _mm256_cvtpd_ps((__m256d)x[3]);
+    _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+    const __m128 r[FG_IIR_LANES] = {r0, r1, r2, r3};
+    for (unsigned j = 0; j < count; j++)
+        _mm_storeu_ps(buf[j] + at, r[j]);
+}
 
 /* count (1..FG_IIR_LANES) lanes: the cascade runs section by section over
  * chunks of CHUNK frames held in double (as the scalar cascade holds its
  * value between sections), so each section's state stays in registers.
- * Sections run two at a time. Lanes past count run zero filters on zeros
- * and are not written. */
+ * Four sections run at once, else two at a time. Lanes past count run
+ * zero filters on zeros and are not written. */
 AVX2_INLINE void process_lanes(fg_iir *const *f,
                                                                 float *const *buf,
                                                                 unsigned count, size_t n)
@@ -187,18 +238,30 @@ AVX2_INLINE void process_lanes(fg_iir *const *f,
     lanes_v x[CHUNK];
     for (size_t start = 0; start < n; start += CHUNK) {
         size_t m = n - start < CHUNK ? n - start : CHUNK;
-        for (size_t i = 0; i < m; i++) {
+        const float *in[FG_IIR_LANES];
+        for (unsigned j = 0; j < FG_IIR_LANES; j++)
+            in[j] = j < count ? buf[j] + start : silence;
+        size_t i = 0;
+        for (; i + 4 <= m; i += 4) /* four frames of four lanes: a transpose */
+            planes_to_lanes(in, i, x + i);
+        for (; i < m; i++) {
             lanes_v v = {0.0, 0.0, 0.0, 0.0};
             for (unsigned j = 0; j < count; j++)
-                v[j] = buf[j][start + i];
+                v[j] = in[j][i];
             x[i] = v;
         }
         unsigned k = 0;
+        if (sections == 4) {
+            run_section_quad(sec, x, m);
+            k = 4;
+        }
         for (; k + 1 < sections; k += 2)
             run_section_pair(&sec[k], &sec[k + 1], x, m);
         for (; k < sections; k++)
             run_section(&sec[k], x, m);
-        for (size_t i = 0; i < m; i++)
+        for (i = 0; i + 4 <= m; i += 4)
+            lanes_to_planes(x + i, buf, start + i, count);
+        for (; i < m; i++)
             for (unsigned j = 0; j < count; j++)
                 buf[j][start + i] = (float)x[i][j];
     }
@@ -210,9 +273,9 @@ AVX2_INLINE void process_lanes(fg_iir *const *f,
     }
 }
 
-/* AVX's sixteen four-double registers hold a pair of sections' state: three
- * or four lanes run as vectors, fewer as scalars (the vectors' moves
- * between planes and lanes cost more than they save there). Without FMA
+/* AVX's four-double registers: three or four lanes run as vectors, fewer
+ * as scalars (the vectors' moves between planes and lanes cost more than
+ * they save there). Without FMA
  * (and with ISO C's contraction off) each lane gets the portable code's
  * roundings in the same order. */
 __attribute__((target("avx2"))) static void process_avx2(fg_iir *const *f, float *const *buf,

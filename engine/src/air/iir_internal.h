@@ -36,10 +36,11 @@ void fg_iir_process(fg_iir *f, float *buf, size_t n);
  * order), but the lanes' recurrences run side by side instead of one
  * after the other, which hides the latency of each. On an x86 processor
  * with AVX2 (checked per call), three or four lanes run as one vector of
- * doubles, section after section over 64-frame chunks held in double, two
- * sections skewed by a sample so that their recurrences overlap: the
- * same operations per lane without FMA, so the same samples, 23-35 %
- * faster here. [audio-thread] */
+ * doubles over 64-frame chunks held in double, each section a sample
+ * behind the one before it so that their recurrences overlap (four
+ * sections at once, else pairs): the same operations per lane without
+ * FMA, so the same samples, 1.6x faster here for four lanes of the four
+ * sections an absorption filter has. [audio-thread] */
 #define FG_IIR_LANES 4
 void fg_iir_process_lanes(fg_iir *const *f, float *const *buf, unsigned count, size_t n);
 
