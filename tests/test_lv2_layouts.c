@@ -342,17 +342,24 @@ static void test_swap_keeps_notes(void **state)
     take_free(&swap);
 }
 
+/* A new name (from the template link, ending in XXXXXX) for the KEMAR set:
+ * a symbolic link the test can take away. */
+static void link_to_kemar(char *link)
+{
+    int fd = mkstemp(link);
+    assert_true(fd >= 0);
+    close(fd);
+    unlink(link);
+    assert_int_equal(symlink(SOFA_DEFAULT_FILE, link), 0);
+}
+
 /* A state naming a file that has gone since: the restore says so through
  * the log, and the fresh instance plays the file it had. */
 static void test_restore_missing_file(void **state)
 {
     (void)state;
     char link[] = "/tmp/fulgur_lv2_kemarXXXXXX";
-    int fd = mkstemp(link);
-    assert_true(fd >= 0);
-    close(fd);
-    unlink(link);
-    assert_int_equal(symlink(SOFA_DEFAULT_FILE, link), 0);
+    link_to_kemar(link);
     lv2_host *h = open_plugin("-binaural");
     const cue swap = {0, 0, link, 0};
     take t;
@@ -382,11 +389,7 @@ static void test_restore_during_swap(void **state)
 {
     (void)state;
     char link[] = "/tmp/fulgur_lv2_kemarXXXXXX";
-    int fd = mkstemp(link);
-    assert_true(fd >= 0);
-    close(fd);
-    unlink(link);
-    assert_int_equal(symlink(SOFA_DEFAULT_FILE, link), 0);
+    link_to_kemar(link);
     lv2_host *saved = open_plugin("-binaural");
     const cue to_link = {0, 0, link, 0};
     take t;
