@@ -295,8 +295,14 @@ void fg_convolver_process(fg_convolver *c, const float *const *in, float *const 
         size_t run = B - c->fill < n - done ? B - c->fill : n - done;
         for (unsigned i = 0; i < c->inputs; i++)
             memcpy(c->in + (size_t)i * 2 * B + B + c->fill, in[i] + done, run * sizeof(float));
-        for (unsigned o = 0; o < c->outputs; o++)
-            memcpy(out[o] + done, c->out + (size_t)o * B + c->fill, run * sizeof(float));
+        /* + 0: a sum that flushed to -0 leaves as +0, so silence has one
+         * pattern of bits (a host adding another engine's zeros to it, as
+         * the LV2 plugin does while it swaps engines, changes nothing) */
+        for (unsigned o = 0; o < c->outputs; o++) {
+            const float *y = c->out + (size_t)o * B + c->fill;
+            for (size_t k = 0; k < run; k++)
+                out[o][done + k] = y[k] + 0.0f;
+        }
         c->fill += run;
         done += run;
         if (c->fill == B) {
