@@ -83,6 +83,7 @@ static LV2_Handle instantiate(const LV2_Descriptor *descriptor, double rate_hz,
     p->map = map;
     p->schedule = schedule;
     p->retiring = -1;
+    p->swap_to = -1;
     p->urid_midi_event = map->map(map->handle, LV2_MIDI__MidiEvent);
     p->urid_long = map->map(map->handle, LV2_ATOM__Long);
     p->urid_counter = map->map(map->handle, FULGUR_LV2_COUNTER_URI);
@@ -290,7 +291,8 @@ static void notify(plugin *p)
     lv2_atom_forge_pop(&p->forge, &seq);
 }
 
-void plugin_engine_swapped(plugin *p, uint32_t slot)
+/* A swap's engine in slot plays from now; the one it replaces plays out. */
+static void swap_in(plugin *p, uint32_t slot)
 {
     if (p->retiring >= 0) /* a swap still playing out: it ends here */
         retire(p);
@@ -302,6 +304,10 @@ void plugin_engine_swapped(plugin *p, uint32_t slot)
 static void run(LV2_Handle instance, uint32_t frames)
 {
     plugin *p = instance;
+    if (p->swap_to >= 0) {
+        swap_in(p, (uint32_t)p->swap_to);
+        p->swap_to = -1;
+    }
     note_controls c;
     read_controls(p, &c);
     read_events(p, &c);

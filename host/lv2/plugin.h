@@ -10,7 +10,9 @@
  *                                         file into a new engine, destroys
  *                                         the engines run() let go; one at
  *                                         a time
- *   work_response()       [audio-thread]  called by the host inside/after run()
+ *   work_response()       [audio-thread]  called by the host inside/after run();
+ *                                         a new engine it hands over plays
+ *                                         from the next run()
  *   instantiate, cleanup,
  *   state restore         [main-thread]   never concurrent with run() or work()
  *   state save            [main-thread]   may run while run() does (state.c)
@@ -182,6 +184,7 @@ typedef struct plugin {
     void *ports[PLUGIN_PORTS_MAX];
     _Atomic uint32_t playing;   /* the slot rendered (read by state save) */
     int32_t retiring;           /* the slot playing out after a swap, -1 none */
+    int32_t swap_to;            /* a swap's reply: the slot to play from the next run(), -1 none */
     uint64_t retire_frames;     /* frames it still plays once its voices are done */
     int notify_pending;         /* the SOFA file to say on the notify port */
     LV2_Atom_Forge forge;       /* writes the notify port */
@@ -221,10 +224,6 @@ fg_result note_post(plugin *p, const work_request *request, fg_voice_id *id);
 LV2_Worker_Status plugin_work(LV2_Handle instance, LV2_Worker_Respond_Function respond,
                               LV2_Worker_Respond_Handle handle, uint32_t size, const void *data);
 LV2_Worker_Status plugin_work_response(LV2_Handle instance, uint32_t size, const void *body);
-
-/* [audio-thread] The worker's new engine (slot) replaces the one
- * rendered, which plays out its voices first (work_response). */
-void plugin_engine_swapped(plugin *p, uint32_t slot);
 
 /* LV2 state interface. */
 const void *plugin_state_interface(void);

@@ -91,6 +91,7 @@ static LV2_State_Status restore_sofa(plugin *p, LV2_State_Retrieve_Function retr
         p->posting = (uint32_t)slot;
         p->generation++; /* replies and retire requests on their way are stale */
         p->retiring = -1;
+        p->swap_to = -1;
         p->notify_pending = 1;
     }
     return LV2_STATE_SUCCESS;

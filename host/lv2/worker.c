@@ -112,7 +112,7 @@ LV2_Worker_Status plugin_work_response(LV2_Handle instance, uint32_t size, const
         if (reply.generation != p->generation)
             return LV2_WORKER_SUCCESS; /* an engine restore has destroyed */
         if (reply.result == FG_OK)
-            plugin_engine_swapped(p, reply.slot);
+            p->swap_to = (int32_t)reply.slot; /* run() swaps it in */
         p->notify_pending = 1; /* the file now playing, new or not */
     } else if (reply.result != FG_OK) {
         p->failures++;
