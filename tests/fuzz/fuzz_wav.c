@@ -29,11 +29,12 @@ static sf_count_t mem_length(void *user)
 static sf_count_t mem_seek(sf_count_t offset, int whence, void *user)
 {
     memory *m = user;
-    sf_count_t to = whence == SEEK_SET ? offset : whence == SEEK_CUR ? m->at + offset
-                                                                     : m->size + offset;
-    if (to < 0 || to > m->size)
+    sf_count_t base = whence == SEEK_SET ? 0 : whence == SEEK_CUR ? m->at : m->size;
+    /* 0 <= base + offset <= size, tested without forming a sum that can
+     * overflow (a file's 64-bit chunk sizes ask for seeks near 2^63) */
+    if (offset < -base || offset > m->size - base)
         return -1;
-    return m->at = to;
+    return m->at = base + offset;
 }
 
 static sf_count_t mem_read(void *out, sf_count_t count, void *user)
