@@ -1,5 +1,6 @@
 #include <math.h>
 #include <stdbool.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "iir_internal.h"
@@ -113,10 +114,12 @@ static void process_portable(fg_iir *const *f, float *const *buf, unsigned count
 typedef double lanes_v __attribute__((vector_size(4 * sizeof(double))));
 typedef long long lanes_mask __attribute__((vector_size(4 * sizeof(long long))));
 
-/* snap() on each lane: fabs(v) < SNAP <=> -SNAP < v < SNAP (false for NaN) */
+/* snap() on each lane: fabs(v), the sign bit cleared, below SNAP (false
+ * for NaN) gives +0 */
 AVX2_INLINE lanes_v snap_lanes(lanes_v v)
 {
-    lanes_mask tiny = (v < SNAP) & (v > -SNAP);
+    const lanes_mask magnitude = {INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX};
+    lanes_mask tiny = (lanes_v)((lanes_mask)v & magnitude) < SNAP;
     return (lanes_v)((lanes_mask)v & ~tiny);
 }
 

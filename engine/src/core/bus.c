@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "bus_internal.h"
+#include "fg_prefault.h"
 #include "air/band_filters_internal.h"
 #include "spatial/spherical_head_internal.h"
 
@@ -41,6 +42,8 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
         fg_bus_set_deinit(s);
         return FG_ERR_NO_MEMORY;
     }
+    fg_prefault_zeroed(s->d3, planes * max_frames * sizeof *s->d3);
+    fg_prefault_zeroed(s->pre, planes * max_frames * sizeof *s->pre);
     s->channels = channels;
     s->max_frames = max_frames;
     s->fs_hz = fs_hz;
@@ -176,9 +179,11 @@ static fg_iir *shadow_filter(fg_bus_set *s, unsigned b, unsigned ch)
     return &s->shadow[b - FG_BUS_PLAIN][ch];
 }
 
+_Static_assert(FG_BUS_MAX_CHANNELS <= 64, "fg_bus_set.written holds a bit per channel");
+
 uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
 {
-    uint64_t dropped = 0;
+    uint64_t dropped = 0, written = 0;
     for (unsigned b = 0; b < s->count; b++) {
         fg_bus *bus = &s->bus[b];
         /* the bus's channels to filter this block: their planes, whether
@@ -190,9 +195,12 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             if (b == FG_BUS_DRY && !bus->pre_used[c]) {
                 /* the first bus into out, which render zeroed */
                 fg_accum_end(&bus->accum[c], out[c], 1.0f);
-                if (bus->accum[c].touched && !all_finite(out[c], n)) {
-                    memset(out[c], 0, n * sizeof(float));
-                    dropped++;
+                if (bus->accum[c].touched) {
+                    written |= (uint64_t)1 << c;
+                    if (!all_finite(out[c], n)) {
+                        memset(out[c], 0, n * sizeof(float));
+                        dropped++;
+                    }
                 }
                 continue;
             }
@@ -225,9 +233,11 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             filter_planes(shadow_filter, s, b, ch, x, count, n, tail);
         for (unsigned k = 0; k < count; k++) {
             bus->ringing[ch[k]] = tail[k];
+            written |= (uint64_t)1 << ch[k];
             for (uint32_t i = 0; i < n; i++)
                 out[ch[k]][i] += x[k][i];
         }
     }
+    s->written = written;
     return dropped;
 }

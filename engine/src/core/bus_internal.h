@@ -69,6 +69,7 @@ typedef struct fg_bus_set {
     fg_iir shadow[FG_BUS_PLAIN][FG_BUS_MAX_CHANNELS]; /* the twins' head high-pass */
     fg_air air;
     double fs_hz;
+    uint64_t written; /* audio thread: bit ch: fg_bus_set_end's last call wrote out[ch] */
 } fg_bus_set;
 
 /* Allocates the buses for blocks of max_frames frames or of fewer, to fit
@@ -103,7 +104,9 @@ static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
     return &s->bus[b].accum[ch];
 }
 
-/* Filters every bus with input or a ringing tail and adds it to out. The
+/* Filters every bus with input or a ringing tail and adds it to out,
+ * noting in s->written the output planes it wrote (the others it leaves
+ * as they were). The
  * last guard of a finite output: a bus whose block holds a non-finite
  * sample before its filters is dropped for the block (its filters keep
  * their state), and an output plane that would hold one is zeroed. Returns

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "engine_internal.h"
+#include "fg_prefault.h"
 #include "fg_rules.h"
 #include "spatial/binaural_internal.h"
 #include "spatial/layout_internal.h"
@@ -174,6 +175,8 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
         e->field_store = calloc((size_t)planes * frames, sizeof *e->field_store);
         for (unsigned ch = 0; ch < planes && e->field_store; ch++)
             e->field[ch] = e->field_store + (size_t)ch * frames;
+        if (e->field_store)
+            fg_prefault_zeroed(e->field_store, (size_t)planes * frames * sizeof *e->field_store);
         r = e->field_store ? fg_binaural_init(&e->binaural, cfg.hrirs)
                            : FG_ERR_NO_MEMORY;
     }

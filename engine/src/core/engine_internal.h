@@ -45,6 +45,7 @@ struct fg_engine {
     /* binaural: the buses' ambisonic field, then the decoder to the ears */
     float *field_store;
     float *field[FG_BUS_MAX_CHANNELS];
+    uint32_t field_frames; /* audio thread: the frames the last block wrote into them */
     fg_binaural binaural;
 
     /* audio thread */

@@ -74,10 +74,14 @@ static void render_block(fg_engine *e, float *const *out, uint32_t nframes)
         atomic_store_explicit(&e->counters.peak_block_work, spent, memory_order_relaxed);
     uint64_t dropped;
     if (e->cfg.layout == FG_LAYOUT_BINAURAL) {
+        /* the loudspeaker planes the last block wrote, over what it wrote
+         * (the others are still zero: a far bolt reaches a few of 50) */
         unsigned planes = e->buses.channels;
         for (unsigned ch = 0; ch < planes; ch++)
-            memset(e->field[ch], 0, (size_t)nframes * sizeof(float));
+            if (e->buses.written >> ch & 1)
+                memset(e->field[ch], 0, (size_t)e->field_frames * sizeof(float));
         dropped = fg_bus_set_end(&e->buses, e->field, nframes);
+        e->field_frames = nframes;
         fg_binaural_process(&e->binaural, (const float *const *)e->field, out, nframes);
     } else {
         dropped = fg_bus_set_end(&e->buses, out, nframes);
