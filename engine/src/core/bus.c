@@ -106,19 +106,19 @@ unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m, double *w_next)
 void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
 {
     for (unsigned b = 0; b < s->count; b++) {
-        for (unsigned ch = 0; ch < s->channels; ch++) {
-            fg_bus *bus = &s->bus[b];
-            fg_accum_restart(&bus->accum[ch], n);
-            if (bus->pre_used[ch])
-                memset(bus->pre[ch], 0, s->max_frames * sizeof(float));
-            bus->pre_used[ch] = false;
-        }
+        fg_bus *bus = &s->bus[b];
+        for (fg_channel_mask m = bus->opened; m; m &= m - 1)
+            fg_accum_restart(&bus->accum[__builtin_ctzll(m)], n);
+        for (fg_channel_mask m = bus->pre_used; m; m &= m - 1)
+            memset(bus->pre[__builtin_ctzll(m)], 0, s->max_frames * sizeof(float));
+        bus->opened = bus->pre_used = 0;
     }
+    s->frames = n;
 }
 
 float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    s->bus[b].pre_used[ch] = true;
+    s->bus[b].pre_used |= (fg_channel_mask)1 << ch;
     return s->bus[b].pre[ch];
 }
 
@@ -134,15 +134,6 @@ static bool ringing(const fg_iir *f)
         if (f->z[i][0] != 0.0 || f->z[i][1] != 0.0)
             return true;
     return false;
-}
-
-/* Whether bus b, ear ch, has input or a tail to play this block. Filters
- * are looked at only once they have had input. */
-static bool live(const fg_bus *bus, unsigned b, unsigned ch)
-{
-    if (bus->accum[ch].touched || bus->pre_used[ch] || bus->ringing[ch])
-        return true;
-    return is_fir(b) && bus->quiet[ch] < FG_ABE_FIR_HISTORY;
 }
 
 /* Whether x[0..n) is all finite: x - x is 0 for a finite x, NaN otherwise
@@ -183,7 +174,8 @@ _Static_assert(FG_BUS_MAX_CHANNELS <= 64, "fg_bus_set.written holds a bit per ch
 
 uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
 {
-    uint64_t dropped = 0, written = 0;
+    uint64_t dropped = 0;
+    fg_channel_mask written = 0;
     for (unsigned b = 0; b < s->count; b++) {
         fg_bus *bus = &s->bus[b];
         /* the bus's channels to filter this block: their planes, whether
@@ -191,24 +183,29 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
         unsigned ch[FG_BUS_MAX_CHANNELS], count = 0;
         float *x[FG_BUS_MAX_CHANNELS];
         bool input[FG_BUS_MAX_CHANNELS], tail[FG_BUS_MAX_CHANNELS];
-        for (unsigned c = 0; c < s->channels; c++) {
-            if (b == FG_BUS_DRY && !bus->pre_used[c]) {
-                /* the first bus into out, which render zeroed */
+        fg_channel_mask touched = 0;
+        for (fg_channel_mask m = bus->opened; m; m &= m - 1)
+            touched |= (fg_channel_mask)bus->accum[__builtin_ctzll(m)].touched << __builtin_ctzll(m);
+        fg_channel_mask live = touched | bus->pre_used | bus->ringing;
+        if (b == FG_BUS_DRY) {
+            /* the first bus into out, which render zeroed, where nothing
+             * was written into its planes */
+            for (fg_channel_mask m = touched & ~bus->pre_used; m; m &= m - 1) {
+                unsigned c = (unsigned)__builtin_ctzll(m);
                 fg_accum_end(&bus->accum[c], out[c], 1.0f);
-                if (bus->accum[c].touched) {
-                    written |= (uint64_t)1 << c;
-                    if (!all_finite(out[c], n)) {
-                        memset(out[c], 0, n * sizeof(float));
-                        dropped++;
-                    }
+                written |= (fg_channel_mask)1 << c;
+                if (!all_finite(out[c], n)) {
+                    memset(out[c], 0, n * sizeof(float));
+                    dropped++;
                 }
-                continue;
             }
-            if (!live(bus, b, c))
-                continue;
-            bool in = bus->accum[c].touched || bus->pre_used[c];
+            live = bus->pre_used | bus->ringing;
+        }
+        for (fg_channel_mask m = live; m; m &= m - 1) {
+            unsigned c = (unsigned)__builtin_ctzll(m);
+            bool in = (touched | bus->pre_used) >> c & 1;
             float *plane = bus->pre[c];
-            bus->pre_used[c] = true; /* zero it again next block */
+            bus->pre_used |= (fg_channel_mask)1 << c; /* zero it again next block */
             fg_accum_end(&bus->accum[c], plane, 1.0f);
             if (in && !all_finite(plane, n)) {
                 memset(plane, 0, n * sizeof(float));
@@ -227,13 +224,15 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             for (unsigned k = 0; k < count; k++) {
                 fg_abe_fir_process(&s->fir[(b / FG_BUS_PLAIN) * s->channels + ch[k]], x[k], n);
                 bus->quiet[ch[k]] = input[k] ? 0 : bus->quiet[ch[k]] + n;
+                tail[k] = bus->quiet[ch[k]] < FG_ABE_FIR_HISTORY;
             }
         }
         if (b >= FG_BUS_PLAIN)
             filter_planes(shadow_filter, s, b, ch, x, count, n, tail);
         for (unsigned k = 0; k < count; k++) {
-            bus->ringing[ch[k]] = tail[k];
-            written |= (uint64_t)1 << ch[k];
+            const fg_channel_mask bit = (fg_channel_mask)1 << ch[k];
+            bus->ringing = tail[k] ? bus->ringing | bit : bus->ringing & ~bit;
+            written |= (fg_channel_mask)1 << ch[k];
             for (uint32_t i = 0; i < n; i++)
                 out[ch[k]][i] += x[k][i];
         }

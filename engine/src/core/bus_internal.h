@@ -42,12 +42,20 @@ enum {
  * blocks of that length (core/render.c). */
 #define FG_BUS_PLANE_BYTES (16u << 20)
 
+/* A bit per channel (FG_BUS_MAX_CHANNELS <= 64): a block's work on a bus
+ * visits only the channels whose bits are set, so a bus costs per channel
+ * that sounds, not per channel of the layout. */
+typedef uint64_t fg_channel_mask;
+
 typedef struct fg_bus {
     fg_accum accum[FG_BUS_MAX_CHANNELS]; /* difference-domain input (the WM-waves), per channel */
     float *pre[FG_BUS_MAX_CHANNELS];     /* the channel's signal before the filters */
-    bool pre_used[FG_BUS_MAX_CHANNELS];  /* something was written into pre this block */
     uint32_t quiet[FG_BUS_MAX_CHANNELS]; /* frames since the FIR last had input */
-    bool ringing[FG_BUS_MAX_CHANNELS];   /* the IIR filters still hold a tail; audio thread only */
+    fg_channel_mask opened;              /* accumulators handed out this block (and set to
+                                          * its length): the others are zero and unused */
+    fg_channel_mask pre_used;            /* something was written into pre this block */
+    fg_channel_mask ringing;             /* the filters still hold a tail: an IIR's
+                                          * state, or the FIR's history of input */
 } fg_bus;
 
 typedef struct fg_bus_set {
@@ -57,6 +65,7 @@ typedef struct fg_bus_set {
     unsigned channels;
     uint32_t max_frames; /* the longest block: the max_frames asked, or fewer to fit
                           * FG_BUS_PLANE_BYTES */
+    uint32_t frames;     /* audio thread: the block under way */
     double *d3;          /* count * channels * max_frames */
     float *pre;          /* the same count of floats */
     /* filters: shared coefficients, state per ear */
@@ -69,7 +78,7 @@ typedef struct fg_bus_set {
     fg_iir shadow[FG_BUS_PLAIN][FG_BUS_MAX_CHANNELS]; /* the twins' head high-pass */
     fg_air air;
     double fs_hz;
-    uint64_t written; /* audio thread: bit ch: fg_bus_set_end's last call wrote out[ch] */
+    fg_channel_mask written; /* audio thread: fg_bus_set_end's last call wrote out[ch] */
 } fg_bus_set;
 
 /* Allocates the buses for blocks of max_frames frames or of fewer, to fit
@@ -98,10 +107,17 @@ void fg_bus_set_begin(fg_bus_set *s, uint32_t n);
 float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch);
 
 /* The difference-domain accumulator of bus b, channel ch, for waves added
- * per breakpoint. [audio-thread] */
+ * per breakpoint; the first call of a block starts it on the block's
+ * length. [audio-thread] */
 static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    return &s->bus[b].accum[ch];
+    fg_bus *bus = &s->bus[b];
+    const fg_channel_mask bit = (fg_channel_mask)1 << ch;
+    if (!(bus->opened & bit)) {
+        bus->opened |= bit;
+        fg_accum_restart(&bus->accum[ch], s->frames);
+    }
+    return &bus->accum[ch];
 }
 
 /* Filters every bus with input or a ringing tail and adds it to out,
