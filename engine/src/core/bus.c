@@ -1,3 +1,4 @@
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -128,11 +129,14 @@ static fg_iir *band_filter(fg_bus_set *s, unsigned b, unsigned ch)
     return &s->band[b / FG_BUS_PLAIN][b % FG_BUS_PLAIN - FG_BUS_BAND0][ch];
 }
 
-static bool ringing(const fg_iir *f)
+/* Whether f still rings; a tail ends (its states are zeroed) once every
+ * state is below FG_BUS_TAIL_FLOOR_PA. */
+static bool ringing(fg_iir *f)
 {
     for (unsigned i = 0; i < f->sections; i++)
-        if (f->z[i][0] != 0.0 || f->z[i][1] != 0.0)
+        if (fabs(f->z[i][0]) >= FG_BUS_TAIL_FLOOR_PA || fabs(f->z[i][1]) >= FG_BUS_TAIL_FLOOR_PA)
             return true;
+    fg_iir_reset(f);
     return false;
 }
 
