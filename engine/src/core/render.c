@@ -82,7 +82,11 @@ static void render_block(fg_engine *e, float *const *out, uint32_t nframes)
                 memset(e->field[ch], 0, (size_t)e->field_frames * sizeof(float));
         dropped = fg_bus_set_end(&e->buses, e->field, nframes);
         e->field_frames = nframes;
-        fg_binaural_process(&e->binaural, (const float *const *)e->field, out, nframes);
+        /* the planes it did not write are zero: the convolver is told so */
+        const float *speakers[FG_BUS_MAX_CHANNELS];
+        for (unsigned ch = 0; ch < planes; ch++)
+            speakers[ch] = e->buses.written >> ch & 1 ? e->field[ch] : NULL;
+        fg_binaural_process(&e->binaural, speakers, out, nframes);
     } else {
         dropped = fg_bus_set_end(&e->buses, out, nframes);
     }

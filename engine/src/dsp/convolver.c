@@ -25,6 +25,7 @@ void fg_convolver_deinit(fg_convolver *c)
     free(c->history);
     free(c->live);
     free(c->quiet);
+    free(c->fed);
     free(c->in);
     free(c->out);
     free(c->acc);
@@ -83,6 +84,7 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
     c->history = alloc_floats((size_t)inputs * P * n);
     c->live = calloc((size_t)inputs * P, sizeof *c->live);
     c->quiet = calloc(inputs, sizeof *c->quiet);
+    c->fed = calloc(inputs, sizeof *c->fed);
     c->in = alloc_floats((size_t)inputs * n);
     c->out = alloc_floats((size_t)outputs * block);
     c->acc = alloc_floats((size_t)(outputs + 1) * n);
@@ -90,7 +92,7 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
     c->lanes = alloc_floats(n * V);
     c->work = alloc_floats(n * V);
     c->zeros = alloc_floats(n);
-    if (!c->filter || !c->history || !c->live || !c->quiet || !c->in || !c->out || !c->acc || !c->pairs ||
+    if (!c->filter || !c->history || !c->live || !c->quiet || !c->fed || !c->in || !c->out || !c->acc || !c->pairs ||
         !c->lanes || !c->work || !c->zeros || !transform_filter(c, length, filter)) {
         fg_convolver_deinit(c);
         return false;
@@ -246,7 +248,9 @@ static void run_block(fg_convolver *c)
     for (unsigned i = 0; i < c->inputs; i++) {
         float *x = c->in + (size_t)i * n;
         /* a block spectrum is zero once this block and the one before are */
-        c->quiet[i] = all_zero(x + B, B) ? (c->quiet[i] < P + 2 ? c->quiet[i] + 1 : P + 2) : 0;
+        bool silent = !c->fed[i] || all_zero(x + B, B);
+        c->fed[i] = false;
+        c->quiet[i] = silent ? (c->quiet[i] < P + 2 ? c->quiet[i] + 1 : P + 2) : 0;
         bool live = c->quiet[i] <= 1;
         c->live[(size_t)i * P + c->newest] = live;
         if (live) { /* (else both halves of its window are zero already) */
@@ -293,8 +297,17 @@ void fg_convolver_process(fg_convolver *c, const float *const *in, float *const 
     size_t done = 0;
     while (done < n) {
         size_t run = B - c->fill < n - done ? B - c->fill : n - done;
-        for (unsigned i = 0; i < c->inputs; i++)
-            memcpy(c->in + (size_t)i * 2 * B + B + c->fill, in[i] + done, run * sizeof(float));
+        for (unsigned i = 0; i < c->inputs; i++) {
+            float *to = c->in + (size_t)i * 2 * B + B + c->fill;
+            if (in[i]) {
+                memcpy(to, in[i] + done, run * sizeof(float));
+                c->fed[i] = true;
+            } else if (c->quiet[i] < 2) {
+                /* (from two silent blocks on, both halves of the window
+                 * are zero: run_block moves no block of it) */
+                memset(to, 0, run * sizeof(float));
+            }
+        }
         /* + 0: a sum that flushed to -0 leaves as +0, so silence has one
          * pattern of bits (a host adding another engine's zeros to it, as
          * the LV2 plugin does while it swaps engines, changes nothing) */

@@ -54,6 +54,8 @@ typedef struct fg_convolver {
                              stale and counts as zero) */
     size_t newest;        /* the slot of the newest block spectrum in history */
     size_t *quiet;        /* [input]: blocks since the input was last non-zero */
+    unsigned char *fed;   /* [input]: frames of the block being filled were given (not
+                             NULL): else the block is known to be zero */
     float *in;            /* [input][2B]: the previous block and the one being filled */
     float *out;           /* [output][B]: the block being played */
     float *acc;           /* [output + 1][2B]: the outputs' spectra, and a spare */
@@ -72,8 +74,9 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
 /* Frees it; a zeroed convolver is a no-op. */
 void fg_convolver_deinit(fg_convolver *c);
 
-/* Takes n frames of each input (in[i][0..n)) and writes n frames of each
- * output (out[o][0..n)), B frames late. [audio-thread] */
+/* Takes n frames of each input (in[i][0..n); a NULL in[i]: n zeros, which
+ * cost nothing once the input's window is silent) and writes n frames of
+ * each output (out[o][0..n)), B frames late. [audio-thread] */
 void fg_convolver_process(fg_convolver *c, const float *const *in, float *const *out, size_t n);
 
 #endif
