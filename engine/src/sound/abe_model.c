@@ -92,13 +92,15 @@ static fg_wave_status abe_add(const fg_event_ear *ear, const fg_event_play *play
     if (a >= (int64_t)play->frames)
         return FG_WAVE_PENDING;
     double peak = w.peak_pa;
-    for (int k = 0; k < FG_PLAY_BUSES; k++) {
-        if (play->share[k] == 0.0)
-            continue;
-        w.peak_pa = peak * play->share[k];
-        float *out = fg_bus_pre(play->buses, play->bus[k], play->ch);
-        if (!fg_abe_wave_render(&w, fs, 0, out, play->frames))
-            return FG_WAVE_NON_FINITE;
+    for (unsigned c = 0; c < play->channels; c++) {
+        for (int k = 0; k < FG_PLAY_BUSES; k++) {
+            if (play->share[k] == 0.0)
+                continue;
+            w.peak_pa = peak * (play->gain[c] * play->share[k]);
+            float *out = fg_bus_pre(play->buses, play->bus[k], play->ch[c]);
+            if (!fg_abe_wave_render(&w, fs, 0, out, play->frames))
+                return FG_WAVE_NON_FINITE;
+        }
     }
     return FG_WAVE_SOUNDING;
 }

@@ -96,7 +96,11 @@ typedef struct fg_event_play {
      * head-shadowed (its twin, + FG_BUS_PLAIN) */
     unsigned bus[FG_PLAY_BUSES];
     double share[FG_PLAY_BUSES];
-    unsigned ch;          /* the output channel */
+    /* the output channels it goes to, each at its layout gain (never 0)
+     * times its share of each bus */
+    unsigned channels;
+    unsigned ch[FG_LAYOUT_CHANNELS_MAX];
+    double gain[FG_LAYOUT_CHANNELS_MAX];
     double origin_frame;  /* the instance's emission, samples after the block's start */
     double offset_s;      /* the instance's emission after the voice's */
     double fs_hz;

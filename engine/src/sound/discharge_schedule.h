@@ -34,8 +34,9 @@
 typedef fg_wave_status (*fg_discharge_place_fn)(const fg_event *ev, const fg_event_ear *ear,
                                                 const fg_event_play *play, fg_wave_place *at);
 
-/* Adds ear play->ch's wave, placed at *at (FG_WAVE_SOUNDING from the
- * place), to the buses (fg_discharge_model's add). */
+/* Adds an ear's wave, placed at *at (FG_WAVE_SOUNDING from the place), to
+ * the buses of play's channels (fg_discharge_model's add); returns its
+ * status, the same on every channel. */
 typedef fg_wave_status (*fg_discharge_add_fn)(const fg_event_ear *ear, const fg_event_play *play,
                                               const fg_wave_place *at);
 
@@ -98,22 +99,18 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event_ear *ear, fg_
     *ctx->work_left -= *units;
     if (placed == FG_WAVE_NON_FINITE)
         return FG_WAVE_NON_FINITE;
-    fg_wave_status st = FG_WAVE_DONE;
-    bool reached = false;
+    play->channels = 0;
     for (unsigned c = 0; c < count; c++) {
         if (gain[c] == 0.0)
             continue;
-        play->ch = out + c;
-        for (unsigned k = 0; k < FG_PLAY_BUSES; k++)
-            play->share[k] = gain[c] * (k % 2 ? ear->shadow : 1.0) * (k / 2 ? next : 1.0 - next);
-        fg_wave_status here = add(ear, play, at);
-        if (!reached || here == FG_WAVE_NON_FINITE)
-            st = here;
-        reached = true;
-        if (here == FG_WAVE_NON_FINITE)
-            break;
+        play->ch[play->channels] = out + c;
+        play->gain[play->channels++] = gain[c];
     }
-    return st;
+    if (play->channels == 0)
+        return FG_WAVE_DONE;
+    for (unsigned k = 0; k < FG_PLAY_BUSES; k++)
+        play->share[k] = (k % 2 ? ear->shadow : 1.0) * (k / 2 ? next : 1.0 - next);
+    return add(ear, play, at);
 }
 
 /* The price of an ear that has ended (fg_discharge_place_fn): its one

@@ -55,20 +55,27 @@ static fg_wave_status wm_place(const fg_event *ev, const fg_event_ear *ear,
     return fg_wm_event_ended(at->last) ? FG_WAVE_DONE : FG_WAVE_SOUNDING;
 }
 
+/* Each bus's wave is evaluated once and added to every channel at its
+ * gain: a layout of many channels (binaural's loudspeakers, ambisonics)
+ * costs an evaluation per bus and an add per channel. */
 static fg_wave_status wm_add(const fg_event_ear *ear, const fg_event_play *play,
                              const fg_wave_place *at)
 {
-    const unsigned ch = play->ch;
     fg_wm_event we = at->wm;
     fg_wave_status status = FG_WAVE_DONE;
     for (int k = 0; k < FG_PLAY_BUSES; k++) {
         if (play->share[k] == 0.0)
             continue;
         we.shape.b = ear->wm.b * play->share[k];
-        status = fg_wm_accum_add_span(fg_bus_accum(play->buses, play->bus[k], ch), &we,
-                                      at->first, at->last);
+        fg_wm_taps taps;
+        status = fg_wm_taps_eval(&we, at->first, at->last, (long)play->frames, &taps);
         if (status == FG_WAVE_NON_FINITE)
             break;
+        if (status != FG_WAVE_SOUNDING)
+            continue;
+        for (unsigned c = 0; c < play->channels; c++)
+            fg_wm_taps_add(fg_bus_accum(play->buses, play->bus[k], play->ch[c]), &taps,
+                           play->gain[c]);
     }
     return status;
 }

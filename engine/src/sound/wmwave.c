@@ -94,7 +94,7 @@ static double sample_average(const fg_wm_event *e, double a, double z, int pa, i
 }
 
 /* a merged range is at most the state (3) plus 4 breakpoints (7 each) */
-enum { MAX_RANGE = 32, MAX_RANGES = 5 };
+_Static_assert(FG_WM_RANGE_MAX >= 3 + 4 * 7 && FG_WM_RANGES_MAX >= 5, "fg_wm_taps' ranges");
 
 /* Samples lo..hi (lo >= -3) evaluated exactly into y[0 .. hi - lo].
  * Sample k covers tau from (k - 1/2 - centre) / width to (k + 1/2 -
@@ -121,13 +121,14 @@ static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
 /* Adds the range eval_range gave: state for k < 0, third differences for
  * k >= lo + 3 (earlier ones in the range lie on one quadratic piece and
  * have none). */
-static void add_range(fg_accum *b, long lo, long hi, const double *y)
+static void add_range(fg_accum *b, long lo, long hi, const double *y, double gain)
 {
     for (long k = lo; k <= hi; k++) {
         if (k < 0)
-            b->state[-1 - k] += y[k - lo];
+            b->state[-1 - k] += gain * y[k - lo];
         else if (k >= lo + 3)
-            b->d3[k] += y[k - lo] - 3.0 * y[k - lo - 1] + 3.0 * y[k - lo - 2] - y[k - lo - 3];
+            b->d3[k] +=
+                gain * (y[k - lo] - 3.0 * y[k - lo - 1] + 3.0 * y[k - lo - 2] - y[k - lo - 3]);
     }
 }
 
@@ -162,13 +163,13 @@ static bool breakpoint_in_block(long m, long n)
     return m <= n - 1 && m + 3 >= 0;
 }
 
-static void add_breakpoint(fg_accum *b, const breakpoint_taps *t)
+static void add_breakpoint(fg_accum *b, long m, const double *taps, double gain)
 {
-    long m = t->m, n = (long)b->n;
+    long n = (long)b->n;
     if (!breakpoint_in_block(m, n))
         return;
     for (long q = m < 0 ? -m : 0; q < 4 && m + q < n; q++)
-        b->d3[m + q] += t->taps[q];
+        b->d3[m + q] += gain * taps[q];
 }
 
 /* The four breakpoints in closed form, when they lie at least a sample
@@ -230,45 +231,48 @@ fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e)
         return FG_WAVE_NON_FINITE;
     long first, last;
     fg_wm_event_span(e, &first, &last);
-    return fg_wm_accum_add_span(b, e, first, last);
+    fg_wm_taps t;
+    fg_wave_status st = fg_wm_taps_eval(e, first, last, (long)b->n, &t);
+    if (st == FG_WAVE_SOUNDING)
+        fg_wm_taps_add(b, &t, 1.0);
+    return st;
 }
 
 /* fg_wm_event_in_range but for B is what the caller knows; the span does
  * not depend on B. */
-fg_wave_status fg_wm_accum_add_span(fg_accum *b, const fg_wm_event *e, long first, long last)
+fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long n,
+                               fg_wm_taps *t)
 {
     if (!isfinite(e->shape.b))
         return FG_WAVE_NON_FINITE;
     const fg_wm_shape *w = &e->shape;
-    long n = (long)b->n;
     if (fg_wm_event_ended(last))
         return FG_WAVE_DONE;
     if (first >= n)
         return FG_WAVE_PENDING;
 
-    double y[MAX_RANGES][MAX_RANGE];
     if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
-        breakpoint_taps t[4];
-        int count;
-        bool state = first < 0;
-        if ((state && !eval_range(e, -3, -1, y[0])) || !eval_breakpoints(e, n, t, &count))
+        breakpoint_taps bp[4];
+        t->closed_form = true;
+        t->state = first < 0;
+        if ((t->state && !eval_range(e, -3, -1, t->y[0])) ||
+            !eval_breakpoints(e, n, bp, &t->count))
             return FG_WAVE_NON_FINITE;
-        b->touched = true;
-        if (state)
-            add_range(b, -3, -1, y[0]);
-        for (int i = 0; i < count; i++)
-            add_breakpoint(b, &t[i]);
+        for (int i = 0; i < t->count; i++) {
+            t->m[i] = bp[i].m;
+            memcpy(t->taps[i], bp[i].taps, sizeof t->taps[i]);
+        }
         return FG_WAVE_SOUNDING;
     }
     /* Breakpoints, ascending; each disturbs the samples m-3..m+3 around the
      * sample m that holds it. The overlapping neighbourhoods merge. */
     double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
     double taus[4] = {-outer, -inner, inner, outer};
-    long lo[MAX_RANGES], hi[MAX_RANGES];
     int ranges = 0;
+    t->closed_form = false;
     if (first < 0) {
-        lo[0] = -3;
-        hi[0] = -1;
+        t->lo[0] = -3;
+        t->hi[0] = -1;
         ranges = 1;
     }
     for (int i = 0; i < 4; i++) {
@@ -277,20 +281,32 @@ fg_wave_status fg_wm_accum_add_span(fg_accum *b, const fg_wm_event *e, long firs
         long z = m + 3 > n - 1 ? n - 1 : m + 3;
         if (a > z)
             continue;
-        if (ranges > 0 && a <= hi[ranges - 1] + 1) {
-            if (z > hi[ranges - 1])
-                hi[ranges - 1] = z;
+        if (ranges > 0 && a <= t->hi[ranges - 1] + 1) {
+            if (z > t->hi[ranges - 1])
+                t->hi[ranges - 1] = z;
             continue;
         }
-        lo[ranges] = a;
-        hi[ranges] = z;
+        t->lo[ranges] = a;
+        t->hi[ranges] = z;
         ranges++;
     }
+    t->count = ranges;
     for (int r = 0; r < ranges; r++)
-        if (!eval_range(e, lo[r], hi[r], y[r]))
+        if (!eval_range(e, t->lo[r], t->hi[r], t->y[r]))
             return FG_WAVE_NON_FINITE;
-    b->touched = true;
-    for (int r = 0; r < ranges; r++)
-        add_range(b, lo[r], hi[r], y[r]);
     return FG_WAVE_SOUNDING;
+}
+
+void fg_wm_taps_add(fg_accum *b, const fg_wm_taps *t, double gain)
+{
+    b->touched = true;
+    if (t->closed_form) {
+        if (t->state)
+            add_range(b, -3, -1, t->y[0], gain);
+        for (int i = 0; i < t->count; i++)
+            add_breakpoint(b, t->m[i], t->taps[i], gain);
+        return;
+    }
+    for (int r = 0; r < t->count; r++)
+        add_range(b, t->lo[r], t->hi[r], t->y[r], gain);
 }

@@ -88,10 +88,33 @@ static inline bool fg_wm_event_ended(long last)
  * it would add is not finite. */
 fg_wave_status fg_wm_accum_add(fg_accum *b, const fg_wm_event *e);
 
-/* fg_wm_accum_add of an event in range but perhaps for its B (checked),
- * whose span first .. last (fg_wm_event_span) is known: one wave placed
- * once and added to several buses at several weights. */
-fg_wave_status fg_wm_accum_add_span(fg_accum *b, const fg_wm_event *e, long first, long last);
+/* What one wave adds to a block's accumulator: the values of the samples
+ * around its breakpoints (and the state before the block), or, where the
+ * breakpoints lie a sample or more apart, their taps in closed form. */
+enum { FG_WM_RANGE_MAX = 32, FG_WM_RANGES_MAX = 5 };
+typedef struct fg_wm_taps {
+    bool closed_form;
+    int count;                    /* breakpoints (closed form) or ranges */
+    bool state;                   /* closed form: y[0] holds the state's three samples */
+    long lo[FG_WM_RANGES_MAX], hi[FG_WM_RANGES_MAX];
+    double y[FG_WM_RANGES_MAX][FG_WM_RANGE_MAX];
+    long m[4];                    /* closed form: the sample holding each breakpoint */
+    double taps[4][4];            /* its third differences at m .. m + 3 */
+} fg_wm_taps;
+
+/* Evaluates, for a block of n frames, event e in range but perhaps for
+ * its B (checked), whose span first .. last (fg_wm_event_span) is known:
+ * FG_WAVE_SOUNDING and *t when it adds to the block; else it adds nothing
+ * (FG_WAVE_DONE, FG_WAVE_PENDING or FG_WAVE_NON_FINITE). One wave placed
+ * and evaluated once is then added to several channels at several gains
+ * (fg_wm_taps_add). */
+fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long n,
+                               fg_wm_taps *t);
+
+/* Adds gain times the evaluated wave to the accumulator of a block of the
+ * length it was evaluated for; a gain of 1 adds what fg_wm_accum_add
+ * would, bit for bit. */
+void fg_wm_taps_add(fg_accum *b, const fg_wm_taps *t, double gain);
 
 
 #endif
