@@ -1,3 +1,4 @@
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -24,7 +25,8 @@ static bool is_band(unsigned b)
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
                           double c_m_s, double head_radius_m, const fg_air *air)
 {
-    memset(s, 0, sizeof *s);
+    /* the set up to the channels' filters: the audio thread writes it */
+    fg_prefault_zeroed(s, offsetof(fg_bus_set, filters) + channels * sizeof s->filters[0]);
     /* no head (one ear, or a spacing of 0) sends nothing to the twins:
      * they get no planes */
     s->count = head_radius_m > 0 ? FG_BUS_COUNT : FG_BUS_PLAIN;
@@ -58,8 +60,8 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     fg_biquad hp = fg_head_highpass(head_radius_m > 0 ? head_radius_m : 1.0, fs_hz, c_m_s);
     for (unsigned b = 0; b < FG_BUS_PLAIN; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
-            s->shadow[b][ch] = (fg_iir){.sec = {hp}, .sections = 1};
-            fg_iir_reset(&s->shadow[b][ch]);
+            s->filters[ch].shadow[b] = (fg_iir){.sec = {hp}, .sections = 1};
+            fg_iir_reset(&s->filters[ch].shadow[b]);
         }
     }
     for (unsigned b = 0; b < s->count; b++) {
@@ -92,7 +94,7 @@ void fg_bus_set_design_bands(fg_bus_set *s)
     for (unsigned k = 0; k < FG_ABSORPTION_BANDS; k++)
         for (unsigned twin = 0; twin < 2; twin++)
             for (unsigned ch = 0; ch < s->channels; ch++)
-                s->band[twin][k][ch] = f[k];
+                s->filters[ch].band[twin][k] = f[k];
     s->bands_designed = true;
 }
 
@@ -125,7 +127,7 @@ float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch)
 /* The band filter of bus b (a band bus or its twin), ear ch. */
 static fg_iir *band_filter(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    return &s->band[b / FG_BUS_PLAIN][b % FG_BUS_PLAIN - FG_BUS_BAND0][ch];
+    return &s->filters[ch].band[b / FG_BUS_PLAIN][b % FG_BUS_PLAIN - FG_BUS_BAND0];
 }
 
 static bool ringing(const fg_iir *f)
@@ -176,7 +178,7 @@ static void filter_planes(fg_iir *(*filter)(fg_bus_set *, unsigned, unsigned), f
 /* The twin's head high-pass of bus b >= FG_BUS_PLAIN, ear ch. */
 static fg_iir *shadow_filter(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    return &s->shadow[b - FG_BUS_PLAIN][ch];
+    return &s->filters[ch].shadow[b - FG_BUS_PLAIN];
 }
 
 _Static_assert(FG_BUS_MAX_CHANNELS <= 64, "fg_bus_set.written holds a bit per channel");

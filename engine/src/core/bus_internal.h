@@ -50,6 +50,12 @@ typedef struct fg_bus {
     bool ringing[FG_BUS_MAX_CHANNELS];   /* the IIR filters still hold a tail; audio thread only */
 } fg_bus;
 
+/* One channel's filter state. */
+typedef struct fg_bus_filters {
+    fg_iir band[2][FG_ABSORPTION_BANDS]; /* [plain, twin][band] */
+    fg_iir shadow[FG_BUS_PLAIN];         /* the twins' head high-pass */
+} fg_bus_filters;
+
 typedef struct fg_bus_set {
     fg_bus bus[FG_BUS_COUNT];
     unsigned count;      /* buses with planes: FG_BUS_COUNT with a head, else
@@ -61,20 +67,23 @@ typedef struct fg_bus_set {
     float *pre;          /* the same count of floats */
     /* filters: shared coefficients, state per ear */
     fg_band_plan plan;
-    fg_iir band[2][FG_ABSORPTION_BANDS][FG_BUS_MAX_CHANNELS]; /* [plain, twin][band][channel] */
     bool bands_designed; /* sim thread only: the audio thread touches a band's
                           * filter after adopting a voice that needed it, so
                           * the inbox ring orders the design before */
     fg_abe_fir *fir;     /* [count / FG_BUS_PLAIN (plain, shadowed)][channels] */
-    fg_iir shadow[FG_BUS_PLAIN][FG_BUS_MAX_CHANNELS]; /* the twins' head high-pass */
     fg_air air;
     double fs_hz;
     uint64_t written; /* audio thread: bit ch: fg_bus_set_end's last call wrote out[ch] */
+    /* last, by channel: a layout of few channels uses (and maps) only the
+     * first few of these 1.5 MB */
+    fg_bus_filters filters[FG_BUS_MAX_CHANNELS];
 } fg_bus_set;
 
 /* Allocates the buses for blocks of max_frames frames or of fewer, to fit
  * FG_BUS_PLANE_BYTES (s->max_frames says), with the twins and their filter
- * for a head of radius head_radius_m (0: none, no twins). [main-thread] */
+ * for a head of radius head_radius_m (0: none, no twins). s is zeroed
+ * memory (the engine's calloc); the part the channels use is mapped, the
+ * filters of the others are never touched. [main-thread] */
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
                           double c_m_s, double head_radius_m, const fg_air *air);
 void fg_bus_set_deinit(fg_bus_set *s);
