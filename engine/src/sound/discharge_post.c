@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "fg_rules.h"
+#include "core/big_alloc_internal.h"
 #include "discharge_internal.h"
 
 #define REPEAT_MIN_DEFAULT_S 0.010
@@ -90,14 +91,15 @@ static void destroy_store(void *storage)
     fg_discharge_store *s = storage;
     if (!s)
         return;
+    size_t capacity = s->capacity, nodes = capacity + 1;
     fg_arena_deinit(&s->arena);
-    free(s->scratch.order_tmp);
-    free(s->scratch.order);
-    free(s->scratch.main);
-    free(s->scratch.junction);
-    free(s->scratch.path_m);
-    free(s->main_index);
-    free(s->events);
+    fg_big_free(s->scratch.order_tmp, nodes, sizeof *s->scratch.order_tmp);
+    fg_big_free(s->scratch.order, nodes, sizeof *s->scratch.order);
+    fg_big_free(s->scratch.main, nodes, 1);
+    fg_big_free(s->scratch.junction, nodes, sizeof *s->scratch.junction);
+    fg_big_free(s->scratch.path_m, nodes, sizeof *s->scratch.path_m);
+    fg_big_free(s->main_index, capacity, sizeof *s->main_index);
+    fg_big_free(s->events, capacity, sizeof *s->events);
     free(s);
 }
 
@@ -107,14 +109,15 @@ static fg_result create_store(const fg_engine_config *cfg, void **storage)
     *storage = s;
     if (!s)
         return FG_ERR_NO_MEMORY;
-    size_t nodes = (size_t)cfg->segment_capacity + 1;
-    s->events = calloc(cfg->segment_capacity, sizeof *s->events);
-    s->main_index = calloc(cfg->segment_capacity, sizeof *s->main_index);
-    s->scratch.path_m = calloc(nodes, sizeof *s->scratch.path_m);
-    s->scratch.junction = calloc(nodes, sizeof *s->scratch.junction);
-    s->scratch.main = calloc(nodes, 1);
-    s->scratch.order = calloc(nodes, sizeof *s->scratch.order);
-    s->scratch.order_tmp = calloc(nodes, sizeof *s->scratch.order_tmp);
+    s->capacity = cfg->segment_capacity;
+    size_t nodes = s->capacity + 1;
+    s->events = fg_big_calloc(s->capacity, sizeof *s->events);
+    s->main_index = fg_big_calloc(s->capacity, sizeof *s->main_index);
+    s->scratch.path_m = fg_big_calloc(nodes, sizeof *s->scratch.path_m);
+    s->scratch.junction = fg_big_calloc(nodes, sizeof *s->scratch.junction);
+    s->scratch.main = fg_big_calloc(nodes, 1);
+    s->scratch.order = fg_big_calloc(nodes, sizeof *s->scratch.order);
+    s->scratch.order_tmp = fg_big_calloc(nodes, sizeof *s->scratch.order_tmp);
     bool ok = s->events && s->main_index && s->scratch.path_m && s->scratch.junction &&
               s->scratch.main && s->scratch.order && s->scratch.order_tmp;
     ok = ok && fg_arena_init(&s->arena, cfg->segment_capacity, cfg->max_voices);
