@@ -170,7 +170,9 @@ typedef struct fg_discharge_voice {
     bool non_finite;           /* a wave turned non-finite: the voice is retired */
 } fg_discharge_voice;
 
-/* Scratch for preparing one tree, preallocated for the largest. */
+/* Scratch for preparing one tree, preallocated for the largest. path_m,
+ * junction and main are done with before the arrival sort begins: they
+ * lie in order_tmp's storage (13 of its 16 bytes a node). */
 typedef struct fg_prep_scratch {
     double *path_m;        /* path length from the root */
     uint32_t *junction;    /* deepest main-channel ancestor (or self) */

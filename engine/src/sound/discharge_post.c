@@ -95,13 +95,14 @@ static void destroy_store(void *storage)
     fg_arena_deinit(&s->arena);
     fg_big_free(s->scratch.order_tmp, nodes, sizeof *s->scratch.order_tmp);
     fg_big_free(s->scratch.order, nodes, sizeof *s->scratch.order);
-    fg_big_free(s->scratch.main, nodes, 1);
-    fg_big_free(s->scratch.junction, nodes, sizeof *s->scratch.junction);
-    fg_big_free(s->scratch.path_m, nodes, sizeof *s->scratch.path_m);
     fg_big_free(s->main_index, capacity, sizeof *s->main_index);
     fg_big_free(s->events, capacity, sizeof *s->events);
     free(s);
 }
+
+_Static_assert(sizeof(fg_sort_pair) >= sizeof(double) + sizeof(uint32_t) + 1 &&
+                   _Alignof(fg_sort_pair) >= _Alignof(double),
+               "path_m, junction and main fit in order_tmp's storage (fg_prep_scratch)");
 
 static fg_result create_store(const fg_engine_config *cfg, void **storage)
 {
@@ -113,13 +114,14 @@ static fg_result create_store(const fg_engine_config *cfg, void **storage)
     size_t nodes = s->capacity + 1;
     s->events = fg_big_calloc(s->capacity, sizeof *s->events);
     s->main_index = fg_big_calloc(s->capacity, sizeof *s->main_index);
-    s->scratch.path_m = fg_big_calloc(nodes, sizeof *s->scratch.path_m);
-    s->scratch.junction = fg_big_calloc(nodes, sizeof *s->scratch.junction);
-    s->scratch.main = fg_big_calloc(nodes, 1);
     s->scratch.order = fg_big_calloc(nodes, sizeof *s->scratch.order);
     s->scratch.order_tmp = fg_big_calloc(nodes, sizeof *s->scratch.order_tmp);
-    bool ok = s->events && s->main_index && s->scratch.path_m && s->scratch.junction &&
-              s->scratch.main && s->scratch.order && s->scratch.order_tmp;
+    if (s->scratch.order_tmp) {
+        s->scratch.path_m = (double *)(void *)s->scratch.order_tmp;
+        s->scratch.junction = (uint32_t *)(void *)(s->scratch.path_m + nodes);
+        s->scratch.main = (uint8_t *)(s->scratch.junction + nodes);
+    }
+    bool ok = s->events && s->main_index && s->scratch.order && s->scratch.order_tmp;
     ok = ok && fg_arena_init(&s->arena, cfg->segment_capacity, cfg->max_voices);
     return ok ? FG_OK : FG_ERR_NO_MEMORY;
 }
