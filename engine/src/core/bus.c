@@ -25,8 +25,8 @@ static bool is_band(unsigned b)
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
                           double c_m_s, double head_radius_m, const fg_air *air)
 {
-    /* the set up to the channels' filters: the audio thread writes it */
-    fg_prefault_zeroed(s, offsetof(fg_bus_set, filters) + channels * sizeof s->filters[0]);
+    /* the set up to the channels it has: the audio thread writes it */
+    fg_prefault_zeroed(s, offsetof(fg_bus_set, chan) + channels * sizeof s->chan[0]);
     /* no head (one ear, or a spacing of 0) sends nothing to the twins:
      * they get no planes */
     s->count = head_radius_m > 0 ? FG_BUS_COUNT : FG_BUS_PLAIN;
@@ -60,16 +60,16 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     fg_biquad hp = fg_head_highpass(head_radius_m > 0 ? head_radius_m : 1.0, fs_hz, c_m_s);
     for (unsigned b = 0; b < FG_BUS_PLAIN; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
-            s->filters[ch].shadow[b] = (fg_iir){.sec = {hp}, .sections = 1};
-            fg_iir_reset(&s->filters[ch].shadow[b]);
+            s->chan[ch].shadow[b] = (fg_iir){.sec = {hp}, .sections = 1};
+            fg_iir_reset(&s->chan[ch].shadow[b]);
         }
     }
     for (unsigned b = 0; b < s->count; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
             size_t plane = (size_t)b * channels + ch;
-            fg_accum_begin(&s->bus[b].accum[ch], s->d3 + plane * max_frames, max_frames);
-            s->bus[b].pre[ch] = s->pre + plane * max_frames;
-            s->bus[b].quiet[ch] = FG_ABE_FIR_HISTORY;
+            fg_accum_begin(&s->chan[ch].accum[b], s->d3 + plane * max_frames, max_frames);
+            s->chan[ch].pre[b] = s->pre + plane * max_frames;
+            s->chan[ch].quiet[b] = FG_ABE_FIR_HISTORY;
         }
     }
     return FG_OK;
@@ -94,7 +94,7 @@ void fg_bus_set_design_bands(fg_bus_set *s)
     for (unsigned k = 0; k < FG_ABSORPTION_BANDS; k++)
         for (unsigned twin = 0; twin < 2; twin++)
             for (unsigned ch = 0; ch < s->channels; ch++)
-                s->filters[ch].band[twin][k] = f[k];
+                s->chan[ch].band[twin][k] = f[k];
     s->bands_designed = true;
 }
 
@@ -109,25 +109,25 @@ void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
 {
     for (unsigned b = 0; b < s->count; b++) {
         for (unsigned ch = 0; ch < s->channels; ch++) {
-            fg_bus *bus = &s->bus[b];
-            fg_accum_restart(&bus->accum[ch], n);
-            if (bus->pre_used[ch])
-                memset(bus->pre[ch], 0, s->max_frames * sizeof(float));
-            bus->pre_used[ch] = false;
+            fg_bus_channel *c = &s->chan[ch];
+            fg_accum_restart(&c->accum[b], n);
+            if (c->pre_used[b])
+                memset(c->pre[b], 0, s->max_frames * sizeof(float));
+            c->pre_used[b] = false;
         }
     }
 }
 
 float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    s->bus[b].pre_used[ch] = true;
-    return s->bus[b].pre[ch];
+    s->chan[ch].pre_used[b] = true;
+    return s->chan[ch].pre[b];
 }
 
 /* The band filter of bus b (a band bus or its twin), ear ch. */
 static fg_iir *band_filter(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    return &s->filters[ch].band[b / FG_BUS_PLAIN][b % FG_BUS_PLAIN - FG_BUS_BAND0];
+    return &s->chan[ch].band[b / FG_BUS_PLAIN][b % FG_BUS_PLAIN - FG_BUS_BAND0];
 }
 
 static bool ringing(const fg_iir *f)
@@ -138,13 +138,13 @@ static bool ringing(const fg_iir *f)
     return false;
 }
 
-/* Whether bus b, ear ch, has input or a tail to play this block. Filters
- * are looked at only once they have had input. */
-static bool live(const fg_bus *bus, unsigned b, unsigned ch)
+/* Whether bus b of channel c has input or a tail to play this block.
+ * Filters are looked at only once they have had input. */
+static bool live(const fg_bus_channel *c, unsigned b)
 {
-    if (bus->accum[ch].touched || bus->pre_used[ch] || bus->ringing[ch])
+    if (c->accum[b].touched || c->pre_used[b] || c->ringing[b])
         return true;
-    return is_fir(b) && bus->quiet[ch] < FG_ABE_FIR_HISTORY;
+    return is_fir(b) && c->quiet[b] < FG_ABE_FIR_HISTORY;
 }
 
 /* Whether x[0..n) is all finite: x - x is 0 for a finite x, NaN otherwise
@@ -178,7 +178,7 @@ static void filter_planes(fg_iir *(*filter)(fg_bus_set *, unsigned, unsigned), f
 /* The twin's head high-pass of bus b >= FG_BUS_PLAIN, ear ch. */
 static fg_iir *shadow_filter(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    return &s->filters[ch].shadow[b - FG_BUS_PLAIN];
+    return &s->chan[ch].shadow[b - FG_BUS_PLAIN];
 }
 
 _Static_assert(FG_BUS_MAX_CHANNELS <= 64, "fg_bus_set.written holds a bit per channel");
@@ -187,17 +187,17 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
 {
     uint64_t dropped = 0, written = 0;
     for (unsigned b = 0; b < s->count; b++) {
-        fg_bus *bus = &s->bus[b];
         /* the bus's channels to filter this block: their planes, whether
          * they had input, whether a filter still rings */
         unsigned ch[FG_BUS_MAX_CHANNELS], count = 0;
         float *x[FG_BUS_MAX_CHANNELS];
         bool input[FG_BUS_MAX_CHANNELS], tail[FG_BUS_MAX_CHANNELS];
         for (unsigned c = 0; c < s->channels; c++) {
-            if (b == FG_BUS_DRY && !bus->pre_used[c]) {
+            fg_bus_channel *bc = &s->chan[c];
+            if (b == FG_BUS_DRY && !bc->pre_used[b]) {
                 /* the first bus into out, which render zeroed */
-                fg_accum_end(&bus->accum[c], out[c], 1.0f);
-                if (bus->accum[c].touched) {
+                fg_accum_end(&bc->accum[b], out[c], 1.0f);
+                if (bc->accum[b].touched) {
                     written |= (uint64_t)1 << c;
                     if (!all_finite(out[c], n)) {
                         memset(out[c], 0, n * sizeof(float));
@@ -206,12 +206,12 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
                 }
                 continue;
             }
-            if (!live(bus, b, c))
+            if (!live(bc, b))
                 continue;
-            bool in = bus->accum[c].touched || bus->pre_used[c];
-            float *plane = bus->pre[c];
-            bus->pre_used[c] = true; /* zero it again next block */
-            fg_accum_end(&bus->accum[c], plane, 1.0f);
+            bool in = bc->accum[b].touched || bc->pre_used[b];
+            float *plane = bc->pre[b];
+            bc->pre_used[b] = true; /* zero it again next block */
+            fg_accum_end(&bc->accum[b], plane, 1.0f);
             if (in && !all_finite(plane, n)) {
                 memset(plane, 0, n * sizeof(float));
                 dropped++;
@@ -228,13 +228,14 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
         if (is_fir(b)) {
             for (unsigned k = 0; k < count; k++) {
                 fg_abe_fir_process(&s->fir[(b / FG_BUS_PLAIN) * s->channels + ch[k]], x[k], n);
-                bus->quiet[ch[k]] = input[k] ? 0 : bus->quiet[ch[k]] + n;
+                uint32_t *quiet = &s->chan[ch[k]].quiet[b];
+                *quiet = input[k] ? 0 : *quiet + n;
             }
         }
         if (b >= FG_BUS_PLAIN)
             filter_planes(shadow_filter, s, b, ch, x, count, n, tail);
         for (unsigned k = 0; k < count; k++) {
-            bus->ringing[ch[k]] = tail[k];
+            s->chan[ch[k]].ringing[b] = tail[k];
             written |= (uint64_t)1 << ch[k];
             for (uint32_t i = 0; i < n; i++)
                 out[ch[k]][i] += x[k][i];

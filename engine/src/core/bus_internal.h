@@ -42,22 +42,18 @@ enum {
  * blocks of that length (core/render.c). */
 #define FG_BUS_PLANE_BYTES (16u << 20)
 
-typedef struct fg_bus {
-    fg_accum accum[FG_BUS_MAX_CHANNELS]; /* difference-domain input (the WM-waves), per channel */
-    float *pre[FG_BUS_MAX_CHANNELS];     /* the channel's signal before the filters */
-    bool pre_used[FG_BUS_MAX_CHANNELS];  /* something was written into pre this block */
-    uint32_t quiet[FG_BUS_MAX_CHANNELS]; /* frames since the FIR last had input */
-    bool ringing[FG_BUS_MAX_CHANNELS];   /* the IIR filters still hold a tail; audio thread only */
-} fg_bus;
-
-/* One channel's filter state. */
-typedef struct fg_bus_filters {
+/* One channel of every bus: its input and its filters' state. */
+typedef struct fg_bus_channel {
+    fg_accum accum[FG_BUS_COUNT];  /* difference-domain input (the WM-waves), per bus */
+    float *pre[FG_BUS_COUNT];      /* the bus's signal before the filters */
+    bool pre_used[FG_BUS_COUNT];   /* something was written into pre this block */
+    uint32_t quiet[FG_BUS_COUNT];  /* frames since the FIR last had input */
+    bool ringing[FG_BUS_COUNT];    /* the IIR filters still hold a tail; audio thread only */
     fg_iir band[2][FG_ABSORPTION_BANDS]; /* [plain, twin][band] */
-    fg_iir shadow[FG_BUS_PLAIN];         /* the twins' head high-pass */
-} fg_bus_filters;
+    fg_iir shadow[FG_BUS_PLAIN];   /* the twins' head high-pass */
+} fg_bus_channel;
 
 typedef struct fg_bus_set {
-    fg_bus bus[FG_BUS_COUNT];
     unsigned count;      /* buses with planes: FG_BUS_COUNT with a head, else
                           * FG_BUS_PLAIN (no twins) */
     unsigned channels;
@@ -75,15 +71,15 @@ typedef struct fg_bus_set {
     double fs_hz;
     uint64_t written; /* audio thread: bit ch: fg_bus_set_end's last call wrote out[ch] */
     /* last, by channel: a layout of few channels uses (and maps) only the
-     * first few of these 1.5 MB */
-    fg_bus_filters filters[FG_BUS_MAX_CHANNELS];
+     * first few of these 1.9 MB */
+    fg_bus_channel chan[FG_BUS_MAX_CHANNELS];
 } fg_bus_set;
 
 /* Allocates the buses for blocks of max_frames frames or of fewer, to fit
  * FG_BUS_PLANE_BYTES (s->max_frames says), with the twins and their filter
  * for a head of radius head_radius_m (0: none, no twins). s is zeroed
  * memory (the engine's calloc); the part the channels use is mapped, the
- * filters of the others are never touched. [main-thread] */
+ * channels beyond them are never touched. [main-thread] */
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
                           double c_m_s, double head_radius_m, const fg_air *air);
 void fg_bus_set_deinit(fg_bus_set *s);
@@ -110,7 +106,7 @@ float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch);
  * per breakpoint. [audio-thread] */
 static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    return &s->bus[b].accum[ch];
+    return &s->chan[ch].accum[b];
 }
 
 /* Filters every bus with input or a ringing tail and adds it to out,
