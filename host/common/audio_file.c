@@ -7,9 +7,13 @@
 void audio_interleave(float *const *planes, uint32_t channels, uint32_t frames, float gain,
                       float *out)
 {
-    for (uint32_t f = 0; f < frames; f++)
-        for (uint32_t ch = 0; ch < channels; ch++)
-            out[(size_t)f * channels + ch] = planes[ch][f] * gain;
+    /* a plane at a time: a plain loop over the frames, out written with a stride */
+    for (uint32_t ch = 0; ch < channels; ch++) {
+        const float *in = planes[ch];
+        float *to = out + ch;
+        for (uint32_t f = 0; f < frames; f++)
+            to[(size_t)f * channels] = in[f] * gain;
+    }
 }
 
 /* Lanes of audio_peak: running maxima that do not wait on each other. */
