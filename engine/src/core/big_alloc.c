@@ -10,12 +10,16 @@
 
 #if defined(MADV_HUGEPAGE)
 #define HUGE_PAGE_BYTES ((size_t)2 << 20)
+/* Mapping a huge page (zeroing 2 MiB) costs about what 15 faults of 4 KiB
+ * pages do on the (virtual) machine measured, 0.15 ms against 10 us each: an
+ * array of 64 pages or more is mapped, at most 1.75 MiB more resident. */
+#define MAPPED_MIN_BYTES ((size_t)256 << 10)
 
 /* bytes rounded up to whole huge pages, or 0 for an array calloc keeps */
 static size_t mapped_bytes(size_t count, size_t size)
 {
     size_t bytes = count * size;
-    if (bytes < HUGE_PAGE_BYTES || bytes > SIZE_MAX - 2 * HUGE_PAGE_BYTES)
+    if (bytes < MAPPED_MIN_BYTES || bytes > SIZE_MAX - 2 * HUGE_PAGE_BYTES)
         return 0;
     return (bytes + HUGE_PAGE_BYTES - 1) & ~(HUGE_PAGE_BYTES - 1);
 }
