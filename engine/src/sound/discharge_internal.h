@@ -184,7 +184,6 @@ typedef struct fg_prep_scratch {
 /* The discharge kind's storage: the events of all live voices, by
  * extents of one arena of segment_capacity, and the prepare scratch. */
 typedef struct fg_discharge_store {
-    size_t capacity;           /* segment_capacity: events[] and main_index[] */
     fg_event *events;
     uint32_t *main_index;
     fg_arena arena;

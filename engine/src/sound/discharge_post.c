@@ -1,11 +1,12 @@
 /* Posting a discharge: the public fg_engine_post, its checks, the one
  * table from fg_discharge.model to a source model, and the discharge
  * kind's storage (the segment events of every live voice). */
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <math.h>
 #include <stdlib.h>
 
+#include "fg_big_alloc.h"
 #include "fg_rules.h"
-#include "core/big_alloc_internal.h"
 #include "discharge_internal.h"
 
 #define REPEAT_MIN_DEFAULT_S 0.010
@@ -91,12 +92,11 @@ static void destroy_store(void *storage)
     fg_discharge_store *s = storage;
     if (!s)
         return;
-    size_t capacity = s->capacity, nodes = capacity + 1;
     fg_arena_deinit(&s->arena);
-    fg_big_free(s->scratch.order_tmp, nodes, sizeof *s->scratch.order_tmp);
-    fg_big_free(s->scratch.order, nodes, sizeof *s->scratch.order);
-    fg_big_free(s->main_index, capacity, sizeof *s->main_index);
-    fg_big_free(s->events, capacity, sizeof *s->events);
+    fg_big_free(s->scratch.order_tmp);
+    fg_big_free(s->scratch.order);
+    fg_big_free(s->main_index);
+    fg_big_free(s->events);
     free(s);
 }
 
@@ -110,10 +110,9 @@ static fg_result create_store(const fg_engine_config *cfg, void **storage)
     *storage = s;
     if (!s)
         return FG_ERR_NO_MEMORY;
-    s->capacity = cfg->segment_capacity;
-    size_t nodes = s->capacity + 1;
-    s->events = fg_big_calloc(s->capacity, sizeof *s->events);
-    s->main_index = fg_big_calloc(s->capacity, sizeof *s->main_index);
+    size_t nodes = (size_t)cfg->segment_capacity + 1;
+    s->events = fg_big_calloc(cfg->segment_capacity, sizeof *s->events);
+    s->main_index = fg_big_calloc(cfg->segment_capacity, sizeof *s->main_index);
     s->scratch.order = fg_big_calloc(nodes, sizeof *s->scratch.order);
     s->scratch.order_tmp = fg_big_calloc(nodes, sizeof *s->scratch.order_tmp);
     if (s->scratch.order_tmp) {
