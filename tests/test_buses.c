@@ -74,7 +74,7 @@ static void test_tail_ends(void **state)
         print_message("band %u: pole radius %.4f, tail written to block %u (bound %u)\n", band,
                       radius, last_written, bound);
         assert_true(last_written <= bound);
-        assert_true(s->bus[bus].ringing == 0);
+        assert_true(s->ringing[bus] == 0);
         const size_t cut = (size_t)(last_written + 1) * BLOCK;
         for (size_t i = 0; i < BLOCKS * BLOCK; i++) {
             if (i < cut && got[fed][i] != ref[i])

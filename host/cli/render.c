@@ -126,20 +126,35 @@ static fg_result flush_sink(wav_sink *w, char *err, size_t err_size)
 #define MOSTLY_SILENT_SHARE 0.1
 #define MOSTLY_SILENT_MIN_S 1.0
 
+/* Whether frame f of a block of interleaved frames holds a sample above
+ * audible. */
+static bool frame_audible(const float *block, uint32_t channels, uint32_t f, float audible)
+{
+    for (uint32_t ch = 0; ch < channels; ch++)
+        if (fabsf(block[(size_t)f * channels + ch]) > audible)
+            return true;
+    return false;
+}
+
 /* Where the block's sound (its interleaved frames) starts and ends, in
- * frames of the render. */
+ * frames of the render: its last audible frame, looked for from the end,
+ * and its first until the render's first is known. */
 static void note_audible(wav_sink *w, const float *block, uint32_t frames)
 {
     const uint32_t channels = w->s->channels;
     const float audible = (float)(AUDIBLE_PA * w->scale);
-    for (uint32_t f = 0; f < frames; f++)
-        for (uint32_t ch = 0; ch < channels; ch++)
-            if (fabsf(block[(size_t)f * channels + ch]) > audible) {
-                if (w->first_audible == UINT64_MAX)
-                    w->first_audible = w->frames + f;
-                w->last_audible = w->frames + f;
-                break;
-            }
+    uint32_t end = frames;
+    while (end > 0 && !frame_audible(block, channels, end - 1, audible))
+        end--;
+    if (end == 0)
+        return;
+    w->last_audible = w->frames + end - 1;
+    if (w->first_audible == UINT64_MAX) {
+        uint32_t f = 0;
+        while (!frame_audible(block, channels, f, audible))
+            f++;
+        w->first_audible = w->frames + f;
+    }
 }
 
 static fg_result write_block(void *context, float *const *planes, uint32_t frames, char *err,

@@ -7,16 +7,34 @@
 void audio_interleave(float *const *planes, uint32_t channels, uint32_t frames, float gain,
                       float *out)
 {
-    for (uint32_t f = 0; f < frames; f++)
-        for (uint32_t ch = 0; ch < channels; ch++)
-            out[(size_t)f * channels + ch] = planes[ch][f] * gain;
+    /* a plane at a time: a plain loop over the frames, out written with a stride */
+    for (uint32_t ch = 0; ch < channels; ch++) {
+        const float *in = planes[ch];
+        float *to = out + ch;
+        for (uint32_t f = 0; f < frames; f++)
+            to[(size_t)f * channels] = in[f] * gain;
+    }
 }
+
+/* Lanes of audio_peak: running maxima that do not wait on each other. */
+#define PEAK_LANES 8
 
 float audio_peak(const float *samples, size_t count, float peak)
 {
-    for (size_t i = 0; i < count; i++)
+    float lane[PEAK_LANES];
+    for (int k = 0; k < PEAK_LANES; k++)
+        lane[k] = peak;
+    size_t i = 0;
+    for (; i + PEAK_LANES <= count; i += PEAK_LANES)
+        for (int k = 0; k < PEAK_LANES; k++) {
+            float a = fabsf(samples[i + k]);
+            lane[k] = a > lane[k] ? a : lane[k];
+        }
+    for (; i < count; i++)
         if (fabsf(samples[i]) > peak)
             peak = fabsf(samples[i]);
+    for (int k = 0; k < PEAK_LANES; k++)
+        peak = lane[k] > peak ? lane[k] : peak;
     return peak;
 }
 

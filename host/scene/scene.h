@@ -150,9 +150,9 @@ int scene_parse(const char *text, size_t size, scene *out, char *err, size_t err
  * or a file over SCENE_MAX_FILE_BYTES is refused before it is read. */
 int scene_load(const char *path, scene *out, char *err, size_t err_size);
 
-/* Reads the whole file at path into *text (malloc'ed, the caller frees;
- * not NUL-terminated) and *size. Returns 0, or -1 with a message naming
- * the file. */
+/* Reads the whole file at path into *text (not NUL-terminated; the caller
+ * frees it with fg_big_free, fg_big_alloc.h) and *size. Returns 0, or -1
+ * with a message naming the file. */
 int scene_read_file(const char *path, char **text, size_t *size, char *err, size_t err_size);
 
 /* As scene_parse and scene_load, with each of sets[0..set_count)

@@ -1,5 +1,5 @@
 /* The scene's top level: settings, then the listener and the discharges. */
-#define _POSIX_C_SOURCE 200809L /* fdopen */
+#define _DEFAULT_SOURCE /* fdopen, fg_big_alloc.h */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -10,7 +10,7 @@
 
 #include "scene_internal.h"
 #include "scene_override.h"
-#include "fg_array.h"
+#include "fg_big_alloc.h"
 
 static const char *const top_keys[] = {
     "sample_rate", "channels", "block", "duration", "seed", "gain", "speed_of_sound",
@@ -286,8 +286,8 @@ int scene_read_file(const char *path, char **text, size_t *size, char *err, size
     for (;;) {
         if (n == cap) {
             /* room for the whole file at once (one byte more to see its end) */
-            char *grown = fg_array_grow(buf, &cap, n + 1, 1,
-                                        st.st_size > 0 ? (size_t)st.st_size + 1 : 65536);
+            char *grown = fg_big_grow(buf, &cap, n + 1, 1,
+                                      st.st_size > 0 ? (size_t)st.st_size + 1 : 65536);
             if (!grown)
                 break;
             buf = grown;
@@ -300,7 +300,7 @@ int scene_read_file(const char *path, char **text, size_t *size, char *err, size
     int failed = ferror(f) || n == cap || n > SCENE_MAX_FILE_BYTES;
     fclose(f);
     if (failed) {
-        free(buf);
+        fg_big_free(buf);
         snprintf(err, err_size, "%s: cannot read the file%s", path,
                  n > SCENE_MAX_FILE_BYTES ? ": it grew past the scene file cap" : "");
         return -1;
@@ -331,7 +331,7 @@ int scene_load_with(const char *path, const char *const *sets, size_t set_count,
     char dir[4096];
     int rc = scene_parse_in(text, size, sets, set_count, scene_dir_of(path, dir, sizeof dir),
                             out, err, err_size);
-    free(text);
+    fg_big_free(text);
     return rc;
 }
 

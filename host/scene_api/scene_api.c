@@ -1,5 +1,6 @@
 /* libfulgur-scene over host/scene: parse, build, the one render loop, and
  * the WAV writer of fulgur render. */
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <assert.h>
 #include <math.h>
 #include <stdio.h>
@@ -12,6 +13,7 @@
 #include "common/audio_file.h"
 #include "common/temp_file.h"
 #include "fg_array.h"
+#include "fg_big_alloc.h"
 #include "fulgur/scene_api.h"
 #include "scene/scene.h"
 #include "scene/scene_render.h"
@@ -96,7 +98,7 @@ fg_result fgs_scene_load(const char *path, const char *const *sets, size_t set_c
     char dir[4096];
     int rc = scene_parse_in(text, size, sets, set_count, scene_dir_of(path, dir, sizeof dir), &s,
                             m.text, m.size);
-    free(text);
+    fg_big_free(text);
     return parsed(rc, &s, out, &m);
 }
 

@@ -1,4 +1,5 @@
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -25,7 +26,8 @@ static bool is_band(unsigned b)
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
                           double c_m_s, double head_radius_m, const fg_air *air)
 {
-    memset(s, 0, sizeof *s);
+    /* the set up to the channels it has: the audio thread writes it */
+    fg_prefault_zeroed(s, offsetof(fg_bus_set, chan) + channels * sizeof s->chan[0]);
     /* no head (one ear, or a spacing of 0) sends nothing to the twins:
      * they get no planes */
     s->count = head_radius_m > 0 ? FG_BUS_COUNT : FG_BUS_PLAIN;
@@ -59,16 +61,16 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     fg_biquad hp = fg_head_highpass(head_radius_m > 0 ? head_radius_m : 1.0, fs_hz, c_m_s);
     for (unsigned b = 0; b < FG_BUS_PLAIN; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
-            s->shadow[b][ch] = (fg_iir){.sec = {hp}, .sections = 1};
-            fg_iir_reset(&s->shadow[b][ch]);
+            s->chan[ch].shadow[b] = (fg_iir){.sec = {hp}, .sections = 1};
+            fg_iir_reset(&s->chan[ch].shadow[b]);
         }
     }
     for (unsigned b = 0; b < s->count; b++) {
         for (unsigned ch = 0; ch < channels; ch++) {
             size_t plane = (size_t)b * channels + ch;
-            fg_accum_begin(&s->bus[b].accum[ch], s->d3 + plane * max_frames, max_frames);
-            s->bus[b].pre[ch] = s->pre + plane * max_frames;
-            s->bus[b].quiet[ch] = FG_ABE_FIR_HISTORY;
+            fg_accum_begin(&s->chan[ch].accum[b], s->d3 + plane * max_frames, max_frames);
+            s->chan[ch].pre[b] = s->pre + plane * max_frames;
+            s->chan[ch].quiet[b] = FG_ABE_FIR_HISTORY;
         }
     }
     return FG_OK;
@@ -93,7 +95,7 @@ void fg_bus_set_design_bands(fg_bus_set *s)
     for (unsigned k = 0; k < FG_ABSORPTION_BANDS; k++)
         for (unsigned twin = 0; twin < 2; twin++)
             for (unsigned ch = 0; ch < s->channels; ch++)
-                s->band[twin][k][ch] = f[k];
+                s->chan[ch].band[twin][k] = f[k];
     s->bands_designed = true;
 }
 
@@ -107,26 +109,25 @@ unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m, double *w_next)
 void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
 {
     for (unsigned b = 0; b < s->count; b++) {
-        fg_bus *bus = &s->bus[b];
-        for (fg_channel_mask m = bus->opened; m; m &= m - 1)
-            fg_accum_restart(&bus->accum[__builtin_ctzll(m)], n);
-        for (fg_channel_mask m = bus->pre_used; m; m &= m - 1)
-            memset(bus->pre[__builtin_ctzll(m)], 0, s->max_frames * sizeof(float));
-        bus->opened = bus->pre_used = 0;
+        for (fg_channel_mask m = s->opened[b]; m; m &= m - 1)
+            fg_accum_restart(&s->chan[__builtin_ctzll(m)].accum[b], n);
+        for (fg_channel_mask m = s->pre_used[b]; m; m &= m - 1)
+            memset(s->chan[__builtin_ctzll(m)].pre[b], 0, s->max_frames * sizeof(float));
+        s->opened[b] = s->pre_used[b] = 0;
     }
     s->frames = n;
 }
 
 float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    s->bus[b].pre_used |= (fg_channel_mask)1 << ch;
-    return s->bus[b].pre[ch];
+    s->pre_used[b] |= (fg_channel_mask)1 << ch;
+    return s->chan[ch].pre[b];
 }
 
 /* The band filter of bus b (a band bus or its twin), ear ch. */
 static fg_iir *band_filter(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    return &s->band[b / FG_BUS_PLAIN][b % FG_BUS_PLAIN - FG_BUS_BAND0][ch];
+    return &s->chan[ch].band[b / FG_BUS_PLAIN][b % FG_BUS_PLAIN - FG_BUS_BAND0];
 }
 
 /* Whether f still rings; a tail ends (its states are zeroed) once every
@@ -171,7 +172,7 @@ static void filter_planes(fg_iir *(*filter)(fg_bus_set *, unsigned, unsigned), f
 /* The twin's head high-pass of bus b >= FG_BUS_PLAIN, ear ch. */
 static fg_iir *shadow_filter(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    return &s->shadow[b - FG_BUS_PLAIN][ch];
+    return &s->chan[ch].shadow[b - FG_BUS_PLAIN];
 }
 
 _Static_assert(FG_BUS_MAX_CHANNELS <= 64, "fg_bus_set.written holds a bit per channel");
@@ -181,36 +182,37 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
     uint64_t dropped = 0;
     fg_channel_mask written = 0;
     for (unsigned b = 0; b < s->count; b++) {
-        fg_bus *bus = &s->bus[b];
         /* the bus's channels to filter this block: their planes, whether
          * they had input, whether a filter still rings */
         unsigned ch[FG_BUS_MAX_CHANNELS], count = 0;
         float *x[FG_BUS_MAX_CHANNELS];
         bool input[FG_BUS_MAX_CHANNELS], tail[FG_BUS_MAX_CHANNELS];
         fg_channel_mask touched = 0;
-        for (fg_channel_mask m = bus->opened; m; m &= m - 1)
-            touched |= (fg_channel_mask)bus->accum[__builtin_ctzll(m)].touched << __builtin_ctzll(m);
-        fg_channel_mask live = touched | bus->pre_used | bus->ringing;
+        for (fg_channel_mask m = s->opened[b]; m; m &= m - 1) {
+            unsigned c = (unsigned)__builtin_ctzll(m);
+            touched |= (fg_channel_mask)s->chan[c].accum[b].touched << c;
+        }
+        fg_channel_mask live = touched | s->pre_used[b] | s->ringing[b];
         if (b == FG_BUS_DRY) {
             /* the first bus into out, which render zeroed, where nothing
              * was written into its planes */
-            for (fg_channel_mask m = touched & ~bus->pre_used; m; m &= m - 1) {
+            for (fg_channel_mask m = touched & ~s->pre_used[b]; m; m &= m - 1) {
                 unsigned c = (unsigned)__builtin_ctzll(m);
-                fg_accum_end(&bus->accum[c], out[c], 1.0f);
+                fg_accum_end(&s->chan[c].accum[b], out[c], 1.0f);
                 written |= (fg_channel_mask)1 << c;
                 if (!all_finite(out[c], n)) {
                     memset(out[c], 0, n * sizeof(float));
                     dropped++;
                 }
             }
-            live = bus->pre_used | bus->ringing;
+            live = s->pre_used[b] | s->ringing[b];
         }
         for (fg_channel_mask m = live; m; m &= m - 1) {
             unsigned c = (unsigned)__builtin_ctzll(m);
-            bool in = (touched | bus->pre_used) >> c & 1;
-            float *plane = bus->pre[c];
-            bus->pre_used |= (fg_channel_mask)1 << c; /* zero it again next block */
-            fg_accum_end(&bus->accum[c], plane, 1.0f);
+            bool in = (touched | s->pre_used[b]) >> c & 1;
+            float *plane = s->chan[c].pre[b];
+            s->pre_used[b] |= (fg_channel_mask)1 << c; /* zero it again next block */
+            fg_accum_end(&s->chan[c].accum[b], plane, 1.0f);
             if (in && !all_finite(plane, n)) {
                 memset(plane, 0, n * sizeof(float));
                 dropped++;
@@ -227,16 +229,17 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
         if (is_fir(b)) {
             for (unsigned k = 0; k < count; k++) {
                 fg_abe_fir_process(&s->fir[(b / FG_BUS_PLAIN) * s->channels + ch[k]], x[k], n);
-                bus->quiet[ch[k]] = input[k] ? 0 : bus->quiet[ch[k]] + n;
-                tail[k] = bus->quiet[ch[k]] < FG_ABE_FIR_HISTORY;
+                uint32_t *quiet = &s->chan[ch[k]].quiet[b];
+                *quiet = input[k] ? 0 : *quiet + n;
+                tail[k] = *quiet < FG_ABE_FIR_HISTORY;
             }
         }
         if (b >= FG_BUS_PLAIN)
             filter_planes(shadow_filter, s, b, ch, x, count, n, tail);
         for (unsigned k = 0; k < count; k++) {
             const fg_channel_mask bit = (fg_channel_mask)1 << ch[k];
-            bus->ringing = tail[k] ? bus->ringing | bit : bus->ringing & ~bit;
-            written |= (fg_channel_mask)1 << ch[k];
+            s->ringing[b] = tail[k] ? s->ringing[b] | bit : s->ringing[b] & ~bit;
+            written |= bit;
             for (uint32_t i = 0; i < n; i++)
                 out[ch[k]][i] += x[k][i];
         }

@@ -58,19 +58,16 @@ enum {
  * that sounds, not per channel of the layout. */
 typedef uint64_t fg_channel_mask;
 
-typedef struct fg_bus {
-    fg_accum accum[FG_BUS_MAX_CHANNELS]; /* difference-domain input (the WM-waves), per channel */
-    float *pre[FG_BUS_MAX_CHANNELS];     /* the channel's signal before the filters */
-    uint32_t quiet[FG_BUS_MAX_CHANNELS]; /* frames since the FIR last had input */
-    fg_channel_mask opened;              /* accumulators handed out this block (and set to
-                                          * its length): the others are zero and unused */
-    fg_channel_mask pre_used;            /* something was written into pre this block */
-    fg_channel_mask ringing;             /* the filters still hold a tail: an IIR's
-                                          * state, or the FIR's history of input */
-} fg_bus;
+/* One channel of every bus: its input and its filters' state. */
+typedef struct fg_bus_channel {
+    fg_accum accum[FG_BUS_COUNT];  /* difference-domain input (the WM-waves), per bus */
+    float *pre[FG_BUS_COUNT];      /* the bus's signal before the filters */
+    uint32_t quiet[FG_BUS_COUNT];  /* frames since the FIR last had input */
+    fg_iir band[2][FG_ABSORPTION_BANDS]; /* [plain, twin][band] */
+    fg_iir shadow[FG_BUS_PLAIN];   /* the twins' head high-pass */
+} fg_bus_channel;
 
 typedef struct fg_bus_set {
-    fg_bus bus[FG_BUS_COUNT];
     unsigned count;      /* buses with planes: FG_BUS_COUNT with a head, else
                           * FG_BUS_PLAIN (no twins) */
     unsigned channels;
@@ -81,20 +78,29 @@ typedef struct fg_bus_set {
     float *pre;          /* the same count of floats */
     /* filters: shared coefficients, state per ear */
     fg_band_plan plan;
-    fg_iir band[2][FG_ABSORPTION_BANDS][FG_BUS_MAX_CHANNELS]; /* [plain, twin][band][channel] */
     bool bands_designed; /* sim thread only: the audio thread touches a band's
                           * filter after adopting a voice that needed it, so
                           * the inbox ring orders the design before */
     fg_abe_fir *fir;     /* [count / FG_BUS_PLAIN (plain, shadowed)][channels] */
-    fg_iir shadow[FG_BUS_PLAIN][FG_BUS_MAX_CHANNELS]; /* the twins' head high-pass */
     fg_air air;
     double fs_hz;
-    fg_channel_mask written; /* audio thread: fg_bus_set_end's last call wrote out[ch] */
+    /* audio thread, a bit per channel of each bus: */
+    fg_channel_mask opened[FG_BUS_COUNT];   /* accumulators handed out this block (and set
+                                             * to its length): the others are zero, unused */
+    fg_channel_mask pre_used[FG_BUS_COUNT]; /* something was written into pre this block */
+    fg_channel_mask ringing[FG_BUS_COUNT];  /* the filters still hold a tail: an IIR's
+                                             * state, or the FIR's history of input */
+    fg_channel_mask written; /* fg_bus_set_end's last call wrote out[ch] */
+    /* last, by channel: a layout of few channels uses (and maps) only the
+     * first few of these 1.9 MB */
+    fg_bus_channel chan[FG_BUS_MAX_CHANNELS];
 } fg_bus_set;
 
 /* Allocates the buses for blocks of max_frames frames or of fewer, to fit
  * FG_BUS_PLANE_BYTES (s->max_frames says), with the twins and their filter
- * for a head of radius head_radius_m (0: none, no twins). [main-thread] */
+ * for a head of radius head_radius_m (0: none, no twins). s is zeroed
+ * memory (the engine's calloc); the part the channels use is mapped, the
+ * channels beyond them are never touched. [main-thread] */
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
                           double c_m_s, double head_radius_m, const fg_air *air);
 void fg_bus_set_deinit(fg_bus_set *s);
@@ -122,13 +128,13 @@ float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch);
  * length. [audio-thread] */
 static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
 {
-    fg_bus *bus = &s->bus[b];
+    fg_accum *a = &s->chan[ch].accum[b];
     const fg_channel_mask bit = (fg_channel_mask)1 << ch;
-    if (!(bus->opened & bit)) {
-        bus->opened |= bit;
-        fg_accum_restart(&bus->accum[ch], s->frames);
+    if (!(s->opened[b] & bit)) {
+        s->opened[b] |= bit;
+        fg_accum_restart(a, s->frames);
     }
-    return &bus->accum[ch];
+    return a;
 }
 
 /* Filters every bus with input or a ringing tail and adds it to out,

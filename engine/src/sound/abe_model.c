@@ -15,24 +15,33 @@ static void abe_wave(const fg_sound_config *p, const fg_event *ev, const fg_ear_
                      fg_event_ear *ear)
 {
     (void)p;
-    fg_abe_wave_init(&ear->abe, &fg_abe_defaults, ev->mid, path->ear, 0.0, path->c_m_s);
-    ear->abe.arrival_s = ear->center_s;
-    ear->abe.rate = ear->rate;
-    ear->abe.peak_pa *= path->gain;
+    fg_abe_wave w;
+    fg_abe_wave_init(&w, &fg_abe_defaults, ev->mid, path->ear, 0.0, path->c_m_s);
+    ear->abe = (fg_abe_ear){w.f0_hz, w.peak_pa * path->gain, w.gamma};
+}
+
+/* The ear's wave, arrival relative to the emission. */
+static fg_abe_wave abe_of(const fg_event_ear *ear)
+{
+    fg_abe_wave w = {.arrival_s = ear->center_s, .f0_hz = ear->abe.f0_hz,
+                     .peak_pa = ear->abe.peak_pa, .gamma = ear->abe.gamma, .rate = ear->rate};
+    fg_abe_wave_set_decay(&w, &fg_abe_defaults);
+    return w;
 }
 
 static double abe_start_s(const fg_event *ev, const fg_event_ear *ear, double c_m_s)
 {
     (void)ev;
     (void)c_m_s;
-    return ear->abe.arrival_s;
+    return ear->center_s;
 }
 
 static bool abe_finite(const fg_event *ev, const fg_event_ear *ear, double fs_hz, double c_m_s)
 {
     (void)ev;
     (void)c_m_s;
-    return fg_abe_wave_in_range(&ear->abe, fs_hz);
+    fg_abe_wave w = abe_of(ear);
+    return fg_abe_wave_in_range(&w, fs_hz);
 }
 
 /* The work bound's price of one path (docs/limits.md): each sample sums
@@ -47,7 +56,7 @@ static bool abe_finite(const fg_event *ev, const fg_event_ear *ear, double fs_hz
 /* The wave of ear as play's instance places it in the block. */
 static fg_abe_wave abe_placed(const fg_event_ear *ear, const fg_event_play *play)
 {
-    fg_abe_wave w = ear->abe;
+    fg_abe_wave w = abe_of(ear);
     w.arrival_s += play->offset_s + play->origin_frame / play->fs_hz;
     return w;
 }

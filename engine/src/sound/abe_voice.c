@@ -30,10 +30,15 @@ void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_config *p, const double src[3
     w->f0_hz = fg_abe_fundamental_hz(p, src[2] - ear[2]);
     w->peak_pa = p->ref_peak_pa * p->ref_distance_m / r;
     w->gamma = p->atten_db_m_hz2 * r * log(10.0) / 20.0;
+    w->rate = 1.0;
+    fg_abe_wave_set_decay(w, p);
+}
+
+void fg_abe_wave_set_decay(fg_abe_wave *w, const fg_abe_config *p)
+{
     w->freq_decay_s = p->freq_decay_s;
     w->amp_decay_s = p->amp_decay_s;
     w->duration_s = p->amp_decay_s * SIXTY_DB;
-    w->rate = 1.0;
     w->harmonics = p->harmonics;
 }
 

@@ -75,6 +75,9 @@ typedef struct fg_abe_wave {
  * fg_abe_config (the tests vary fg_abe_defaults within them). */
 void fg_abe_wave_init(fg_abe_wave *w, const fg_abe_config *p, const double src[3],
                       const double ear[3], double emit_s, double c_m_s);
+/* Sets the parts of w that are p's alone, whatever the path: the decays,
+ * the length and the harmonics (fg_abe_wave_init sets them too). */
+void fg_abe_wave_set_decay(fg_abe_wave *w, const fg_abe_config *p);
 
 /* Whether w's numbers are finite and its span's sample indices fit an
  * int64_t at fs_hz: what fg_abe_wave_span and fg_abe_wave_render need. */

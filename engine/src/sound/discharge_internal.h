@@ -31,6 +31,15 @@
  * discharge whose sound outlasts the interval. */
 #define FG_MAX_INSTANCES 64
 
+/* Abe's wave as an ear keeps it: what depends on the path. The arrival
+ * and the rate are the ear's center_s and rate, the rest fg_abe_defaults'
+ * (abe_model.c), so that an event stays 232 bytes, not 328. */
+typedef struct fg_abe_ear {
+    double f0_hz;
+    double peak_pa;
+    double gamma;
+} fg_abe_ear;
+
 /* What one ear hears of one event, evaluated at the moment its wave
  * arrives: at the post (or when a still listener moves to another place)
  * for every instance, or afresh for each instance and block while the
@@ -40,7 +49,7 @@ typedef struct fg_event_ear {
     double rate;          /* Doppler: the ear hears the wave rate times as long, 1 / (1 - d travel/dt) */
     union {               /* the model's wave, written by its wave function */
         fg_wm_shape wm;   /* the WM-wave (wm_model.c) */
-        fg_abe_wave abe;  /* Abe's wave, arrival relative to the emission (abe_model.c) */
+        fg_abe_ear abe;   /* Abe's wave (abe_model.c) */
     };
     float shadow;         /* head shadow: the weight alpha - 1 sent to the shadowed twin */
     float band_w;         /* the share sent to bus + 1, the next distance band */
@@ -165,7 +174,9 @@ typedef struct fg_discharge_voice {
     bool non_finite;           /* a wave turned non-finite: the voice is retired */
 } fg_discharge_voice;
 
-/* Scratch for preparing one tree, preallocated for the largest. */
+/* Scratch for preparing one tree, preallocated for the largest. path_m,
+ * junction and main are done with before the arrival sort begins: they
+ * lie in order_tmp's storage (13 of its 16 bytes a node). */
 typedef struct fg_prep_scratch {
     double *path_m;        /* path length from the root */
     uint32_t *junction;    /* deepest main-channel ancestor (or self) */

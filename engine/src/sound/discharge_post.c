@@ -1,9 +1,11 @@
 /* Posting a discharge: the public fg_engine_post, its checks, the one
  * table from fg_discharge.model to a source model, and the discharge
  * kind's storage (the segment events of every live voice). */
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <math.h>
 #include <stdlib.h>
 
+#include "fg_big_alloc.h"
 #include "fg_rules.h"
 #include "discharge_internal.h"
 
@@ -91,15 +93,16 @@ static void destroy_store(void *storage)
     if (!s)
         return;
     fg_arena_deinit(&s->arena);
-    free(s->scratch.order_tmp);
-    free(s->scratch.order);
-    free(s->scratch.main);
-    free(s->scratch.junction);
-    free(s->scratch.path_m);
-    free(s->main_index);
-    free(s->events);
+    fg_big_free(s->scratch.order_tmp);
+    fg_big_free(s->scratch.order);
+    fg_big_free(s->main_index);
+    fg_big_free(s->events);
     free(s);
 }
+
+_Static_assert(sizeof(fg_sort_pair) >= sizeof(double) + sizeof(uint32_t) + 1 &&
+                   _Alignof(fg_sort_pair) >= _Alignof(double),
+               "path_m, junction and main fit in order_tmp's storage (fg_prep_scratch)");
 
 static fg_result create_store(const fg_engine_config *cfg, void **storage)
 {
@@ -108,15 +111,16 @@ static fg_result create_store(const fg_engine_config *cfg, void **storage)
     if (!s)
         return FG_ERR_NO_MEMORY;
     size_t nodes = (size_t)cfg->segment_capacity + 1;
-    s->events = calloc(cfg->segment_capacity, sizeof *s->events);
-    s->main_index = calloc(cfg->segment_capacity, sizeof *s->main_index);
-    s->scratch.path_m = calloc(nodes, sizeof *s->scratch.path_m);
-    s->scratch.junction = calloc(nodes, sizeof *s->scratch.junction);
-    s->scratch.main = calloc(nodes, 1);
-    s->scratch.order = calloc(nodes, sizeof *s->scratch.order);
-    s->scratch.order_tmp = calloc(nodes, sizeof *s->scratch.order_tmp);
-    bool ok = s->events && s->main_index && s->scratch.path_m && s->scratch.junction &&
-              s->scratch.main && s->scratch.order && s->scratch.order_tmp;
+    s->events = fg_big_calloc(cfg->segment_capacity, sizeof *s->events);
+    s->main_index = fg_big_calloc(cfg->segment_capacity, sizeof *s->main_index);
+    s->scratch.order = fg_big_calloc(nodes, sizeof *s->scratch.order);
+    s->scratch.order_tmp = fg_big_calloc(nodes, sizeof *s->scratch.order_tmp);
+    if (s->scratch.order_tmp) {
+        s->scratch.path_m = (double *)(void *)s->scratch.order_tmp;
+        s->scratch.junction = (uint32_t *)(void *)(s->scratch.path_m + nodes);
+        s->scratch.main = (uint8_t *)(s->scratch.junction + nodes);
+    }
+    bool ok = s->events && s->main_index && s->scratch.order && s->scratch.order_tmp;
     ok = ok && fg_arena_init(&s->arena, cfg->segment_capacity, cfg->max_voices);
     return ok ? FG_OK : FG_ERR_NO_MEMORY;
 }
