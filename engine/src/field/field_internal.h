@@ -110,7 +110,7 @@ static inline fg_row fg_level_row(const fg_level *L, int j, int k)
  * its squared norm. zero_free: read phi as 0 on free nodes (the residual is
  * then b). */
 double fg_lap_residual(const fg_level *L, const double *phi, int zero_free, float *out);
-/* phi += e (a correction in split rows) on the free nodes, then
+/* phi += e (a correction in split rows, 0 on Dirichlet nodes), then
  * fg_lap_residual(L, phi, 0, out), in one pass over phi. */
 double fg_lap_correct_residual(const fg_level *L, double *phi, const float *e, float *out);
 /* One over-relaxed Gauss-Seidel half-sweep over the nodes of one colour

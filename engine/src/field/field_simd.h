@@ -49,6 +49,39 @@ static inline double fg_vd_lane(fg_vd v, int l)
     return v[l];
 }
 
+#ifdef FG_VF_SHUFFLE
+#define FG_FIELD_SPLIT_VECTORS 1
+
+typedef float fg_field_vf2 __attribute__((vector_size(8)));
+
+/* Four doubles of a row from a node i, nodes (i, i + 1) in v0 and
+ * (i + 2, i + 3) in v1, as floats into split rows: nodes i and i + 2 at
+ * same[0..1], i + 1 and i + 3 at other[0..1]. */
+static inline void fg_vd_store_split(float *same, float *other, fg_vd v0, fg_vd v1)
+{
+    fg_field_vf2 a = __builtin_convertvector(__builtin_shufflevector(v0, v1, 0, 2), fg_field_vf2);
+    fg_field_vf2 b = __builtin_convertvector(__builtin_shufflevector(v0, v1, 1, 3), fg_field_vf2);
+    memcpy(same, &a, sizeof a);
+    memcpy(other, &b, sizeof b);
+}
+
+/* x[0..8) += the eight floats even[0], odd[0], even[1], odd[1], ... */
+static inline void fg_vd_add_interleaved(double *x, const float *even, const float *odd)
+{
+    fg_vf e = fg_vf_load(even), o = fg_vf_load(odd);
+    fg_vf lo = __builtin_shufflevector(e, o, 0, 4, 1, 5);
+    fg_vf hi = __builtin_shufflevector(e, o, 2, 6, 3, 7);
+    fg_vd d[4] = {__builtin_convertvector(__builtin_shufflevector(lo, lo, 0, 1), fg_vd),
+                  __builtin_convertvector(__builtin_shufflevector(lo, lo, 2, 3), fg_vd),
+                  __builtin_convertvector(__builtin_shufflevector(hi, hi, 0, 1), fg_vd),
+                  __builtin_convertvector(__builtin_shufflevector(hi, hi, 2, 3), fg_vd)};
+    for (int q = 0; q < 4; q++) {
+        fg_vd v = fg_vd_load(x + 2 * q) + d[q];
+        memcpy(x + 2 * q, &v, sizeof v);
+    }
+}
+#endif
+
 #else
 
 static inline fg_vf fg_vf_select(fg_vi mask, fg_vf a, fg_vf b)
