@@ -145,8 +145,9 @@ static void node_range(const fg_field *f, const fg_shape *s, int lo[3], int hi[3
     }
 }
 
-/* Visits the nodes a shape covers: counts them, and labels them when write. */
-static size_t cover(fg_field *f, const fg_shape *s, double value, int write)
+/* Visits the nodes a shape covers and labels them when write; returns
+ * whether it covers any (without write, from the first one it finds). */
+static int cover(fg_field *f, const fg_shape *s, double value, int write)
 {
     const fg_level *L = &f->level[0];
     double x[3];
@@ -164,19 +165,19 @@ static size_t cover(fg_field *f, const fg_shape *s, double value, int write)
     }
     int lo[3], hi[3];
     node_range(f, s, lo, hi);
-    size_t covered = 0;
+    int covered = 0;
     for (int k = lo[2]; k <= hi[2]; k++)
         for (int j = lo[1]; j <= hi[1]; j++)
             for (int i = lo[0]; i <= hi[0]; i++) {
                 node_pos(f, i, j, k, x);
                 if (!fg_shape_contains(s, x))
                     continue;
-                covered++;
-                if (write) {
-                    size_t id = fg_level_index(L, i, j, k);
-                    f->label[id] = region_of(s->role);
-                    f->phi[id] = value;
-                }
+                if (!write)
+                    return 1;
+                covered = 1;
+                size_t id = fg_level_index(L, i, j, k);
+                f->label[id] = region_of(s->role);
+                f->phi[id] = value;
             }
     return covered;
 }
@@ -213,11 +214,11 @@ fg_result fg_field_set_shapes(fg_field *f, const fg_shape *shapes, size_t count,
     fg_shape use[FG_FIELD_MAX_SHAPES];
     for (size_t i = 0; i < count; i++) {
         use[i] = shapes[i];
-        if (cover(f, &use[i], 0.0, 0) > 0)
+        if (cover(f, &use[i], 0.0, 0))
             continue;
         if (use[i].kind == FG_SHAPE_SPHERE && !use[i].outside) {
             use[i] = as_point(&use[i]);
-            if (cover(f, &use[i], 0.0, 0) > 0)
+            if (cover(f, &use[i], 0.0, 0))
                 continue;
         }
         *bad = i;
