@@ -18,18 +18,14 @@ static inline fg_vf fg_vf_select(fg_vi mask, fg_vf a, fg_vf b)
     return (fg_vf)((mask & (fg_vi)a) | (~mask & (fg_vi)b));
 }
 
-/* All ones in the lanes whose byte of m[0..3] is zero (a free node). */
-static inline fg_vi fg_vi_zero_bytes(const uint8_t *m)
-{
-    fg_vi v = {m[0], m[1], m[2], m[3]};
-    return v == 0;
-}
-
 /* All ones in the lanes l where (l + parity) is even: the nodes of one
  * colour in a block starting at an index of the given parity. */
 static inline fg_vi fg_vi_colour(int parity)
 {
-    return parity & 1 ? (fg_vi){0, -1, 0, -1} : (fg_vi){-1, 0, -1, 0};
+    fg_vi v = {0};
+    for (int l = 0; l < FG_VF_LANES; l++)
+        v[l] = ((l + parity) & 1) - 1;
+    return v;
 }
 
 static inline fg_vd fg_vd_select(fg_vl mask, fg_vd a, fg_vd b)
@@ -37,10 +33,13 @@ static inline fg_vd fg_vd_select(fg_vl mask, fg_vd a, fg_vd b)
     return (fg_vd)((mask & (fg_vl)a) | (~mask & (fg_vl)b));
 }
 
-/* All ones in the lanes whose byte of m[0..1] is zero. */
+/* All ones in the lanes whose byte of m[0..FG_VD_LANES) is zero (a free
+ * node). */
 static inline fg_vl fg_vl_zero_bytes(const uint8_t *m)
 {
-    fg_vl v = {m[0], m[1]};
+    fg_vl v = {0};
+    for (int l = 0; l < FG_VD_LANES; l++)
+        v[l] = m[l];
     return v == 0;
 }
 
@@ -49,37 +48,56 @@ static inline double fg_vd_lane(fg_vd v, int l)
     return v[l];
 }
 
-#ifdef FG_VF_SHUFFLE
+#if defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector) && __has_builtin(__builtin_convertvector)
+/* Lane shuffles (Clang, GCC 12 and later): rows of doubles to split rows
+ * of floats and back. */
 #define FG_FIELD_SPLIT_VECTORS 1
 
-typedef float fg_field_vf2 __attribute__((vector_size(8)));
+/* FG_VD_LANES floats. */
+typedef float fg_field_vfd __attribute__((vector_size(FG_VD_LANES * sizeof(float))));
 
-/* Four doubles of a row from a node i, nodes (i, i + 1) in v0 and
- * (i + 2, i + 3) in v1, as floats into split rows: nodes i and i + 2 at
- * same[0..1], i + 1 and i + 3 at other[0..1]. */
+/* Two blocks of a row from a node i, nodes i.. in v0 and the next
+ * FG_VD_LANES in v1, as floats into split rows: the nodes of i's parity
+ * at same[0..FG_VD_LANES), the others at other[0..FG_VD_LANES). */
 static inline void fg_vd_store_split(float *same, float *other, fg_vd v0, fg_vd v1)
 {
-    fg_field_vf2 a = __builtin_convertvector(__builtin_shufflevector(v0, v1, 0, 2), fg_field_vf2);
-    fg_field_vf2 b = __builtin_convertvector(__builtin_shufflevector(v0, v1, 1, 3), fg_field_vf2);
+#ifdef FG_SIMD_WIDE
+    fg_field_vfd a = __builtin_convertvector(__builtin_shufflevector(v0, v1, 0, 2, 4, 6), fg_field_vfd);
+    fg_field_vfd b = __builtin_convertvector(__builtin_shufflevector(v0, v1, 1, 3, 5, 7), fg_field_vfd);
+#else
+    fg_field_vfd a = __builtin_convertvector(__builtin_shufflevector(v0, v1, 0, 2), fg_field_vfd);
+    fg_field_vfd b = __builtin_convertvector(__builtin_shufflevector(v0, v1, 1, 3), fg_field_vfd);
+#endif
     memcpy(same, &a, sizeof a);
     memcpy(other, &b, sizeof b);
 }
 
-/* x[0..8) += the eight floats even[0], odd[0], even[1], odd[1], ... */
+/* x[0..2 FG_VF_LANES) += even[0], odd[0], even[1], odd[1], ... */
 static inline void fg_vd_add_interleaved(double *x, const float *even, const float *odd)
 {
     fg_vf e = fg_vf_load(even), o = fg_vf_load(odd);
+#ifdef FG_SIMD_WIDE
+    fg_vf lo = __builtin_shufflevector(e, o, 0, 8, 1, 9, 2, 10, 3, 11);
+    fg_vf hi = __builtin_shufflevector(e, o, 4, 12, 5, 13, 6, 14, 7, 15);
+    fg_vd d[4] = {__builtin_convertvector(__builtin_shufflevector(lo, lo, 0, 1, 2, 3), fg_vd),
+                  __builtin_convertvector(__builtin_shufflevector(lo, lo, 4, 5, 6, 7), fg_vd),
+                  __builtin_convertvector(__builtin_shufflevector(hi, hi, 0, 1, 2, 3), fg_vd),
+                  __builtin_convertvector(__builtin_shufflevector(hi, hi, 4, 5, 6, 7), fg_vd)};
+#else
     fg_vf lo = __builtin_shufflevector(e, o, 0, 4, 1, 5);
     fg_vf hi = __builtin_shufflevector(e, o, 2, 6, 3, 7);
     fg_vd d[4] = {__builtin_convertvector(__builtin_shufflevector(lo, lo, 0, 1), fg_vd),
                   __builtin_convertvector(__builtin_shufflevector(lo, lo, 2, 3), fg_vd),
                   __builtin_convertvector(__builtin_shufflevector(hi, hi, 0, 1), fg_vd),
                   __builtin_convertvector(__builtin_shufflevector(hi, hi, 2, 3), fg_vd)};
+#endif
     for (int q = 0; q < 4; q++) {
-        fg_vd v = fg_vd_load(x + 2 * q) + d[q];
-        memcpy(x + 2 * q, &v, sizeof v);
+        fg_vd v = fg_vd_load(x + q * FG_VD_LANES) + d[q];
+        memcpy(x + q * FG_VD_LANES, &v, sizeof v);
     }
 }
+#endif
 #endif
 
 #else
@@ -87,11 +105,6 @@ static inline void fg_vd_add_interleaved(double *x, const float *even, const flo
 static inline fg_vf fg_vf_select(fg_vi mask, fg_vf a, fg_vf b)
 {
     return mask ? a : b;
-}
-
-static inline fg_vi fg_vi_zero_bytes(const uint8_t *m)
-{
-    return m[0] == 0;
 }
 
 static inline fg_vi fg_vi_colour(int parity)

@@ -218,6 +218,10 @@ double fg_lap_correct_residual(const fg_level *L, double *phi, const float *e, f
     return sum;
 }
 
+/* The relaxations in double are not vector kernels: the AVX2 build
+ * (kernels_avx2.h) leaves them out. */
+#ifndef FG_SIMD_WIDE
+
 /* Over-relaxed Gauss-Seidel at free node i of row r. */
 static inline void relax_at(const fg_level *L, double *xr, const fg_row *r, int i, double omega,
                             double dg)
@@ -275,3 +279,5 @@ void fg_lap_relax_box(const fg_level *L, double *x, int ci, int cj, int ck, int 
                         relax_at(L, x + r.at, &r, i, 1.0, dg);
                 }
 }
+
+#endif
