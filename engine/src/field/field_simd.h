@@ -10,6 +10,23 @@
 
 #include "fg_simd.h"
 
+#if defined(FG_SIMD_WIDE) && !defined(FG_SIMD_SCALAR)
+#include <immintrin.h>
+#endif
+
+/* Where a kernel of the AVX2 build (kernels_avx2.h) returns to the
+ * portable code: clears the upper halves of the vector registers, which
+ * left in use make every SSE instruction after them wait on those halves
+ * (SOR's sweeps ran five times slower). The compiler does this itself at
+ * the end of a function that uses them, but not for a static one called
+ * from a function that does not (laplace.c's rows). */
+static inline void fg_simd_leave(void)
+{
+#if defined(FG_SIMD_WIDE) && !defined(FG_SIMD_SCALAR)
+    _mm256_zeroupper();
+#endif
+}
+
 #if FG_VF_LANES > 1
 
 /* Lanes where mask is all ones take a, the others b. */

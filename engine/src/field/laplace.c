@@ -179,6 +179,7 @@ double fg_lap_residual(const fg_level *L, const double *phi, int zero_free, floa
     double sum = 0.0;
     for (int k = 0; k < L->n[2]; k++)
         sum += residual_plane(L, phi, zero_free, k, out);
+    fg_simd_leave();
     return sum;
 }
 
@@ -215,6 +216,7 @@ double fg_lap_correct_residual(const fg_level *L, double *phi, const float *e, f
             correct_plane(L, phi, e, k + 1);
         sum += residual_plane(L, phi, 0, k, out);
     }
+    fg_simd_leave();
     return sum;
 }
 
