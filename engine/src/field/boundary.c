@@ -37,18 +37,27 @@ static fg_result check_shape(const fg_shape *s)
     return FG_ERR_ARGUMENT;
 }
 
+/* Whether sphere s covers a point whose offsets from its centre have the
+ * squares dx2, dy2, dz2. */
+static inline int sphere_covers(const fg_shape *s, double dx2, double dy2, double dz2)
+{
+    int in = (dx2 + dy2) + dz2 <= s->radius_m * s->radius_m;
+    return s->outside ? !in : in;
+}
+
+static inline double square(double v)
+{
+    return v * v;
+}
+
 int fg_shape_contains(const fg_shape *s, const double x[3])
 {
-    double d[3], dot = 0.0, r2 = 0.0;
+    double dot = 0.0;
     int in = 1;
     switch (s->kind) {
     case FG_SHAPE_SPHERE:
-        for (int a = 0; a < 3; a++) {
-            d[a] = x[a] - s->centre_m[a];
-            r2 += d[a] * d[a];
-        }
-        in = r2 <= s->radius_m * s->radius_m;
-        return s->outside ? !in : in;
+        return sphere_covers(s, square(x[0] - s->centre_m[0]), square(x[1] - s->centre_m[1]),
+                             square(x[2] - s->centre_m[2]));
     case FG_SHAPE_BOX:
         for (int a = 0; a < 3; a++)
             in = in && x[a] >= s->box_min_m[a] && x[a] <= s->box_max_m[a];
@@ -167,10 +176,16 @@ static int cover(fg_field *f, const fg_shape *s, double value, int write)
     node_range(f, s, lo, hi);
     int covered = 0;
     for (int k = lo[2]; k <= hi[2]; k++)
-        for (int j = lo[1]; j <= hi[1]; j++)
+        for (int j = lo[1]; j <= hi[1]; j++) {
+            /* A sphere's row (the plasma ball's glass covers most of the
+             * grid) squares its y and z offsets once. */
+            node_pos(f, 0, j, k, x);
+            const double dy2 = square(x[1] - s->centre_m[1]), dz2 = square(x[2] - s->centre_m[2]);
             for (int i = lo[0]; i <= hi[0]; i++) {
                 node_pos(f, i, j, k, x);
-                if (!fg_shape_contains(s, x))
+                if (s->kind == FG_SHAPE_SPHERE
+                        ? !sphere_covers(s, square(x[0] - s->centre_m[0]), dy2, dz2)
+                        : !fg_shape_contains(s, x))
                     continue;
                 if (!write)
                     return 1;
@@ -179,6 +194,7 @@ static int cover(fg_field *f, const fg_shape *s, double value, int write)
                 f->label[id] = region_of(s->role);
                 f->phi[id] = value;
             }
+        }
     return covered;
 }
 
