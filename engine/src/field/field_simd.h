@@ -1,6 +1,7 @@
 /* The field solver's vector helpers beyond util/fg_simd.h (the types,
- * loads and stores): selects by mask and the masks of free nodes and
- * colours. A mask is nonzero (all ones in a vector lane) where a select
+ * loads and stores): selects by mask, the masks of free nodes and
+ * colours, the moves between rows of doubles and split rows of floats,
+ * and the AVX2 build's way back to the portable code. A mask is nonzero (all ones in a vector lane) where a select
  * takes its first operand; a build with FG_SIMD_SCALAR defined gets one
  * lane, the same kernels on scalars. */
 #ifndef FULGUR_FIELD_SIMD_H
@@ -80,12 +81,14 @@ typedef float fg_field_vfd __attribute__((vector_size(FG_VD_LANES * sizeof(float
 static inline void fg_vd_store_split(float *same, float *other, fg_vd v0, fg_vd v1)
 {
 #ifdef FG_SIMD_WIDE
-    fg_field_vfd a = __builtin_convertvector(__builtin_shufflevector(v0, v1, 0, 2, 4, 6), fg_field_vfd);
-    fg_field_vfd b = __builtin_convertvector(__builtin_shufflevector(v0, v1, 1, 3, 5, 7), fg_field_vfd);
+    fg_vd s = __builtin_shufflevector(v0, v1, 0, 2, 4, 6);
+    fg_vd o = __builtin_shufflevector(v0, v1, 1, 3, 5, 7);
 #else
-    fg_field_vfd a = __builtin_convertvector(__builtin_shufflevector(v0, v1, 0, 2), fg_field_vfd);
-    fg_field_vfd b = __builtin_convertvector(__builtin_shufflevector(v0, v1, 1, 3), fg_field_vfd);
+    fg_vd s = __builtin_shufflevector(v0, v1, 0, 2);
+    fg_vd o = __builtin_shufflevector(v0, v1, 1, 3);
 #endif
+    fg_field_vfd a = __builtin_convertvector(s, fg_field_vfd);
+    fg_field_vfd b = __builtin_convertvector(o, fg_field_vfd);
     memcpy(same, &a, sizeof a);
     memcpy(other, &b, sizeof b);
 }
