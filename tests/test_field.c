@@ -173,6 +173,58 @@ static void converges_with_thin_tree(void **state)
     fg_field_destroy(f);
 }
 
+/* phi after a solve of f's shapes from a cold start with the given
+ * kernels, into out; returns the iterations. */
+static int solve_with(fg_field *f, const fg_field_kernels *k, double tol, double *out)
+{
+    f->kernels = k;
+    fg_solve_report rep;
+    assert_int_equal(fg_field_solve(f, &(fg_solve_config){.cold = 1, .tolerance = tol}, &rep),
+                     FG_OK);
+    assert_int_equal(fg_field_get_potential(f, out), FG_OK);
+    return rep.iterations;
+}
+
+/* The kernels the CPU gets (AVX2 where it has it) give the portable
+ * kernels' phi bit for bit: the presets (V-cycles), the thin tree
+ * (conjugate gradient) and a size whose rows end in part blocks. */
+static void kernels_agree(void **state)
+{
+    (void)state;
+    for (int c = 0; c < 4; c++) {
+        fg_field *f = NULL;
+        fg_shape s[16];
+        double tol = 1e-5;
+        if (c < 2) {
+            fg_field_scene sc;
+            assert_int_equal(
+                fg_field_scene_preset(c ? FG_PRESET_PLASMA_BALL : FG_PRESET_SPARK_BALLS, 65, &sc),
+                FG_OK);
+            assert_int_equal(fg_field_create(&sc.grid, &f), FG_OK);
+            assert_int_equal(fg_field_set_shapes(f, sc.shapes, sc.shape_count, NULL), FG_OK);
+        } else if (c == 2) {
+            f = make(65, 0.0, 1.0);
+            assert_int_equal(fg_field_set_shapes(f, s, thin_tree(s, 31.0 / 64.0), NULL), FG_OK);
+            tol = 1e-8;
+        } else {
+            f = make(43, -0.5, 0.5);
+            spheres(f);
+        }
+        size_t n = fg_field_node_count(f);
+        double *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
+        assert_non_null(a);
+        assert_non_null(b);
+        const fg_field_kernels *picked = f->kernels;
+        int ia = solve_with(f, &fg_field_kernels_portable, tol, a);
+        int ib = solve_with(f, picked, tol, b);
+        assert_int_equal(ia, ib);
+        assert_memory_equal(a, b, n * sizeof *a);
+        free(a);
+        free(b);
+        fg_field_destroy(f);
+    }
+}
+
 /* The V-cycle as a stationary iteration, phi += M r, for cycles cycles
  * from phi = 0: the mean factor per cycle after the first, and the last
  * relative residual. */
@@ -414,6 +466,7 @@ int main(void)
         cmocka_unit_test(mgpcg_agrees_with_sor),
         cmocka_unit_test(converges_with_thin_tree),
         cmocka_unit_test(plain_vcycles_converge),
+        cmocka_unit_test(kernels_agree),
         cmocka_unit_test(presets_default_solve_accuracy),
         cmocka_unit_test(warm_start_is_cheaper),
         cmocka_unit_test(voltages_normalise),

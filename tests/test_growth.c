@@ -1,7 +1,8 @@
 /* Growth: trees reach the target, avoid obstacles, carry a connected main
  * channel, repeat with their seed; eq. 2's probabilities (chi-square on a
  * fixed field); the field-source seam with an analytic field; DBM; the
- * presets' segment counts; bad input. */
+ * presets' segment counts; the growth's field tolerance against a
+ * converged field; bad input. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -401,6 +402,133 @@ static void presets_match_table_2(void **state)
     assert_true(plasma > 55.0 && plasma < 100.0);
 }
 
+/* A source reading one field that also samples a reference field at the
+ * same points and keeps the largest relative difference of phi. */
+typedef struct paired_source {
+    fg_field_source field, reference;
+    double worst;
+} paired_source;
+
+static fg_result paired_sample(void *context, const double *points_m, size_t n, double *out)
+{
+    paired_source *p = context;
+    double ref[2 * 3 * FG_GROWTH_MAX_CANDIDATES];
+    fg_result r = p->field.sample(p->field.context, points_m, n, out);
+    if (r != FG_OK)
+        return r;
+    for (size_t at = 0; at < n; at += sizeof ref / sizeof ref[0]) {
+        size_t m = n - at < sizeof ref / sizeof ref[0] ? n - at : sizeof ref / sizeof ref[0];
+        assert_int_equal(p->reference.sample(p->reference.context, points_m + 3 * at, m, ref),
+                         FG_OK);
+        for (size_t i = 0; i < m; i++)
+            if (ref[i] > 0.0)
+                p->worst = fmax(p->worst, fabs(out[at + i] / ref[i] - 1.0));
+    }
+    return FG_OK;
+}
+
+static fg_result paired_classify(void *context, const double *points_m, size_t n, uint8_t *out)
+{
+    paired_source *p = context;
+    return p->field.classify(p->field.context, points_m, n, out);
+}
+
+static size_t paired_origin_sites(void *context, double *points_m, size_t max)
+{
+    paired_source *p = context;
+    return p->field.origin_sites(p->field.context, points_m, max);
+}
+
+enum { STATS = 4 };
+
+/* Segments, branch points (nodes with two children or more), the longest
+ * root-to-node path in segments and the farthest node from the root. */
+static void tree_statistics(fg_tree *t, double out[STATS])
+{
+    const fg_node *v = fg_tree_nodes(t);
+    size_t n = fg_tree_count(t);
+    int children[4096] = {0}, depth[4096] = {0};
+    assert_true(n <= 4096);
+    out[0] = (double)(n - 1);
+    out[1] = out[2] = out[3] = 0.0;
+    for (size_t i = 1; i < n; i++) {
+        children[v[i].parent]++;
+        depth[i] = depth[v[i].parent] + 1;
+        out[2] = fmax(out[2], depth[i]);
+        out[3] = fmax(out[3], hypot(hypot(v[i].x - v[0].x, v[i].y - v[0].y), v[i].z - v[0].z));
+    }
+    for (size_t i = 0; i < n; i++)
+        out[1] += children[i] >= 2;
+}
+
+/* The growth's field tolerance (FG_GROWTH_FIELD_TOLERANCE) against a field
+ * solved to 1e-11: phi at every point the trees sample within 4e-3 of
+ * itself (so eq. 2's probabilities within 2 %), and over 200 seeds the
+ * mean segments, branch points, depth and reach within four standard
+ * errors of the difference of two means. */
+static void tolerance_keeps_statistics(void **state)
+{
+    (void)state;
+    enum { SEEDS = 200 };
+    const char *names[STATS] = {"segments", "branch points", "depth", "reach"};
+    for (int p = 0; p < 2; p++) {
+        fg_field_scene s;
+        fg_preset preset = p ? FG_PRESET_PLASMA_BALL : FG_PRESET_SPARK_BALLS;
+        assert_int_equal(fg_field_scene_preset(preset, 65, &s), FG_OK);
+        const double tol[2] = {FG_GROWTH_FIELD_TOLERANCE, 1e-11};
+        fg_field *f[2];
+        fg_tree *t[2];
+        for (int w = 0; w < 2; w++) {
+            assert_int_equal(fg_field_create(&s.grid, &f[w]), FG_OK);
+            assert_int_equal(fg_field_set_shapes(f[w], s.shapes, s.shape_count, NULL), FG_OK);
+            assert_int_equal(fg_field_solve(f[w], &(fg_solve_config){.tolerance = tol[w]}, NULL),
+                             FG_OK);
+            assert_int_equal(fg_tree_create(0, &t[w]), FG_OK);
+        }
+        paired_source pair = {.worst = 0.0};
+        fg_field_source_init(f[0], &pair.field);
+        fg_field_source_init(f[1], &pair.reference);
+        fg_field_source src = pair.field;
+        src.context = &pair;
+        src.sample = paired_sample;
+        src.classify = paired_classify;
+        src.origin_sites = paired_origin_sites;
+        double sum[2][STATS] = {{0}}, squares[2][STATS] = {{0}};
+        for (uint64_t seed = 1; seed <= SEEDS; seed++) {
+            fg_growth_config g = s.growth;
+            g.seed = seed;
+            assert_int_equal(fg_grow_matsuyama(&src, &g, t[0], NULL), FG_OK);
+            assert_int_equal(fg_grow_matsuyama(&pair.reference, &g, t[1], NULL), FG_OK);
+            for (int w = 0; w < 2; w++) {
+                double x[STATS];
+                tree_statistics(t[w], x);
+                for (int k = 0; k < STATS; k++) {
+                    sum[w][k] += x[k];
+                    squares[w][k] += x[k] * x[k];
+                }
+            }
+        }
+        print_message("%s, phi to %.0e against 1e-11: worst relative phi %.1e\n",
+                      fg_preset_name(preset), tol[0], pair.worst);
+        assert_true(pair.worst < 4e-3);
+        for (int k = 0; k < STATS; k++) {
+            double mean[2], var[2];
+            for (int w = 0; w < 2; w++) {
+                mean[w] = sum[w][k] / SEEDS;
+                var[w] = (squares[w][k] - SEEDS * mean[w] * mean[w]) / (SEEDS - 1);
+            }
+            double se = sqrt((var[0] + var[1]) / SEEDS);
+            print_message("  %s %.4g / %.4g (standard error of the difference %.2g)\n",
+                          names[k], mean[0], mean[1], se);
+            assert_true(fabs(mean[0] - mean[1]) <= 4.0 * se);
+        }
+        for (int w = 0; w < 2; w++) {
+            fg_tree_destroy(t[w]);
+            fg_field_destroy(f[w]);
+        }
+    }
+}
+
 static void enclosed_origin_is_unreachable(void **state)
 {
     (void)state;
@@ -496,6 +624,7 @@ int main(void)
         cmocka_unit_test(dbm_grows_and_restores),
         cmocka_unit_test(dbm_eta_shapes_the_channel),
         cmocka_unit_test(presets_match_table_2),
+        cmocka_unit_test(tolerance_keeps_statistics),
         cmocka_unit_test(enclosed_origin_is_unreachable),
         cmocka_unit_test(bad_growth_input),
     };

@@ -30,7 +30,8 @@ static fg_result field_ready(preset_field *pf, fg_preset preset, fg_field **out)
             return r;
         r = fg_field_set_shapes(field, pf->setup.shapes, pf->setup.shape_count, NULL);
         if (r == FG_OK)
-            r = fg_field_solve(field, NULL, NULL);
+            r = fg_field_solve(field, &(fg_solve_config){.tolerance = FG_GROWTH_FIELD_TOLERANCE},
+                               NULL);
         if (r != FG_OK) {
             fg_field_destroy(field);
             return r;

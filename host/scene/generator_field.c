@@ -241,7 +241,9 @@ static int run(const ctx *c, const fg_grid_config *grid, const fg_shape *shapes,
                              "the GPU solve or growth failed: %s (%s)", fg_result_str(r), msg);
         return 0;
     }
-    r = fg_field_solve(f, NULL, &rep);
+    /* DBM solves again as it grows, to the solver's default. */
+    fg_solve_config sc = {.tolerance = dbm ? 0.0 : FG_GROWTH_FIELD_TOLERANCE};
+    r = fg_field_solve(f, &sc, &rep);
     if (r == FG_OK) {
         if (dbm) {
             r = fg_grow_dbm(f, growth, out, NULL);

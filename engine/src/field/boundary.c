@@ -37,18 +37,27 @@ static fg_result check_shape(const fg_shape *s)
     return FG_ERR_ARGUMENT;
 }
 
+/* Whether sphere s covers a point whose offsets from its centre have the
+ * squares dx2, dy2, dz2. */
+static inline int sphere_covers(const fg_shape *s, double dx2, double dy2, double dz2)
+{
+    int in = (dx2 + dy2) + dz2 <= s->radius_m * s->radius_m;
+    return s->outside ? !in : in;
+}
+
+static inline double square(double v)
+{
+    return v * v;
+}
+
 int fg_shape_contains(const fg_shape *s, const double x[3])
 {
-    double d[3], dot = 0.0, r2 = 0.0;
+    double dot = 0.0;
     int in = 1;
     switch (s->kind) {
     case FG_SHAPE_SPHERE:
-        for (int a = 0; a < 3; a++) {
-            d[a] = x[a] - s->centre_m[a];
-            r2 += d[a] * d[a];
-        }
-        in = r2 <= s->radius_m * s->radius_m;
-        return s->outside ? !in : in;
+        return sphere_covers(s, square(x[0] - s->centre_m[0]), square(x[1] - s->centre_m[1]),
+                             square(x[2] - s->centre_m[2]));
     case FG_SHAPE_BOX:
         for (int a = 0; a < 3; a++)
             in = in && x[a] >= s->box_min_m[a] && x[a] <= s->box_max_m[a];
@@ -145,8 +154,9 @@ static void node_range(const fg_field *f, const fg_shape *s, int lo[3], int hi[3
     }
 }
 
-/* Visits the nodes a shape covers: counts them, and labels them when write. */
-static size_t cover(fg_field *f, const fg_shape *s, double value, int write)
+/* Visits the nodes a shape covers and labels them when write; returns
+ * whether it covers any (without write, from the first one it finds). */
+static int cover(fg_field *f, const fg_shape *s, double value, int write)
 {
     const fg_level *L = &f->level[0];
     double x[3];
@@ -164,20 +174,27 @@ static size_t cover(fg_field *f, const fg_shape *s, double value, int write)
     }
     int lo[3], hi[3];
     node_range(f, s, lo, hi);
-    size_t covered = 0;
+    int covered = 0;
     for (int k = lo[2]; k <= hi[2]; k++)
-        for (int j = lo[1]; j <= hi[1]; j++)
+        for (int j = lo[1]; j <= hi[1]; j++) {
+            /* A sphere's row (the plasma ball's glass covers most of the
+             * grid) squares its y and z offsets once. */
+            node_pos(f, 0, j, k, x);
+            const double dy2 = square(x[1] - s->centre_m[1]), dz2 = square(x[2] - s->centre_m[2]);
             for (int i = lo[0]; i <= hi[0]; i++) {
                 node_pos(f, i, j, k, x);
-                if (!fg_shape_contains(s, x))
+                if (s->kind == FG_SHAPE_SPHERE
+                        ? !sphere_covers(s, square(x[0] - s->centre_m[0]), dy2, dz2)
+                        : !fg_shape_contains(s, x))
                     continue;
-                covered++;
-                if (write) {
-                    size_t id = fg_level_index(L, i, j, k);
-                    f->label[id] = region_of(s->role);
-                    f->phi[id] = value;
-                }
+                if (!write)
+                    return 1;
+                covered = 1;
+                size_t id = fg_level_index(L, i, j, k);
+                f->label[id] = region_of(s->role);
+                f->phi[id] = value;
             }
+        }
     return covered;
 }
 
@@ -213,11 +230,11 @@ fg_result fg_field_set_shapes(fg_field *f, const fg_shape *shapes, size_t count,
     fg_shape use[FG_FIELD_MAX_SHAPES];
     for (size_t i = 0; i < count; i++) {
         use[i] = shapes[i];
-        if (cover(f, &use[i], 0.0, 0) > 0)
+        if (cover(f, &use[i], 0.0, 0))
             continue;
         if (use[i].kind == FG_SHAPE_SPHERE && !use[i].outside) {
             use[i] = as_point(&use[i]);
-            if (cover(f, &use[i], 0.0, 0) > 0)
+            if (cover(f, &use[i], 0.0, 0))
                 continue;
         }
         *bad = i;

@@ -45,6 +45,7 @@ typedef struct fg_level {
 
 struct fg_field {
     fg_grid_config config;
+    const struct fg_field_kernels *kernels; /* fg_field_kernels_pick's */
     double h[3];
     double *phi;
     uint8_t *label;    /* fg_region per node; FREE means unknown */
@@ -110,7 +111,7 @@ static inline fg_row fg_level_row(const fg_level *L, int j, int k)
  * its squared norm. zero_free: read phi as 0 on free nodes (the residual is
  * then b). */
 double fg_lap_residual(const fg_level *L, const double *phi, int zero_free, float *out);
-/* phi += e (a correction in split rows) on the free nodes, then
+/* phi += e (a correction in split rows, 0 on Dirichlet nodes), then
  * fg_lap_residual(L, phi, 0, out), in one pass over phi. */
 double fg_lap_correct_residual(const fg_level *L, double *phi, const float *e, float *out);
 /* One over-relaxed Gauss-Seidel half-sweep over the nodes of one colour
@@ -124,10 +125,11 @@ void fg_lap_relax_box(const fg_level *L, double *phi, int i, int j, int k, int r
 
 /* fine_kernels.c — level 0 in float, for a correction (0 on Dirichlet
  * nodes). */
-/* e = the first red half-sweep from e = 0 (black nodes 0). */
-void fg_fine_sweep_from_zero(const fg_level *L, float *e, const float *rhs);
-/* One Gauss-Seidel half-sweep over the nodes of one colour (rhs not NULL). */
-void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color);
+/* count Gauss-Seidel half-sweeps over the nodes of one colour, color
+ * first and then alternating (rhs not NULL), in one pass over the planes.
+ * from_zero (with color 0): the first starts from e = 0 (black nodes 0). */
+void fg_fine_smooth(const fg_level *L, float *e, const float *rhs, int color, int count,
+                    int from_zero);
 /* out = rhs - A x on free nodes (rhs NULL: zero), 0 on Dirichlet nodes. */
 void fg_fine_residual(const fg_level *L, const float *x, const float *rhs, float *out);
 
@@ -146,6 +148,32 @@ void fg_coarse_residual(const fg_level *L);
 void fg_restrict(const fg_level *F, const float *r, fg_level *C);
 /* e += P C->e (trilinear) on F's free nodes. */
 void fg_prolong_add(const fg_level *C, const fg_level *F, float *e);
+
+/* The vector kernels above (laplace.c's residuals, fine_kernels.c,
+ * coarse_kernels.c, transfer.c) as the solver calls them: the portable
+ * build's, or where the CPU has AVX2 the same files built again for it,
+ * eight floats at a time (kernels_avx2.h). Both give the same floats:
+ * the arithmetic is lane by lane in the same order, with no FMA. */
+typedef struct fg_field_kernels {
+    double (*lap_residual)(const fg_level *L, const double *phi, int zero_free, float *out);
+    double (*lap_correct_residual)(const fg_level *L, double *phi, const float *e, float *out);
+    void (*fine_smooth)(const fg_level *L, float *e, const float *rhs, int color, int count,
+                        int from_zero);
+    void (*fine_residual)(const fg_level *L, const float *x, const float *rhs, float *out);
+    void (*coarse_sweep_from_zero)(const fg_level *L);
+    void (*coarse_sweep)(const fg_level *L, int color);
+    void (*coarse_residual)(const fg_level *L);
+    void (*restrict_down)(const fg_level *F, const float *r, fg_level *C);
+    void (*prolong_add)(const fg_level *C, const fg_level *F, float *e);
+} fg_field_kernels;
+
+extern const fg_field_kernels fg_field_kernels_portable;
+#ifdef FG_FIELD_AVX2
+extern const fg_field_kernels fg_field_kernels_avx2;
+#endif
+
+/* multigrid.c — the kernels for the CPU this runs on. */
+const fg_field_kernels *fg_field_kernels_pick(void);
 
 /* multigrid.c — the levels below level 0 (sizes, weights, storage), and the
  * cycle. */

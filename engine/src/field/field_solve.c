@@ -32,7 +32,7 @@
 double fg_field_b_norm(fg_field *f)
 {
     if (f->b_norm < 0.0) {
-        double b = sqrt(fg_lap_residual(&f->level[0], f->phi, 1, NULL));
+        double b = sqrt(f->kernels->lap_residual(&f->level[0], f->phi, 1, NULL));
         f->b_norm = b > 0.0 ? b : 1.0;
     }
     return f->b_norm;
@@ -48,13 +48,14 @@ static void zero_free(fg_field *f)
 
 double fg_field_residual(fg_field *f)
 {
-    return sqrt(fg_lap_residual(&f->level[0], f->phi, 0, f->r)) / fg_field_b_norm(f);
+    return sqrt(f->kernels->lap_residual(&f->level[0], f->phi, 0, f->r)) / fg_field_b_norm(f);
 }
 
 /* phi += e, and the new residual (as fg_field_residual). */
 static double correct(fg_field *f, const float *e)
 {
-    return sqrt(fg_lap_correct_residual(&f->level[0], f->phi, e, f->r)) / fg_field_b_norm(f);
+    return sqrt(f->kernels->lap_correct_residual(&f->level[0], f->phi, e, f->r)) /
+           fg_field_b_norm(f);
 }
 
 static double dot(const float *a, const float *b, size_t n)
@@ -85,7 +86,7 @@ static int cg(fg_field *f, double reduce, int max_it)
     double rz = dot(r, z, n), stop = reduce * reduce * dot(r, r, n);
     int it = 0;
     while (it < max_it) {
-        fg_fine_residual(L, p, NULL, q); /* q = -A p */
+        f->kernels->fine_residual(L, p, NULL, q); /* q = -A p */
         double pq = -dot(p, q, n);
         if (!(pq > 0.0))
             break; /* p = 0: r is already zero to rounding */
@@ -193,7 +194,7 @@ fg_result fg_field_solve(fg_field *f, const fg_solve_config *config, fg_solve_re
     if (c.solver == FG_SOLVER_SOR) {
         r = sor(f, tol, FG_DEF(c.max_iterations, DEFAULT_SOR_SWEEPS), c.sor_omega, report);
     } else {
-        double rr = fg_lap_residual(&f->level[0], f->phi, 0, f->r);
+        double rr = f->kernels->lap_residual(&f->level[0], f->phi, 0, f->r);
         /* Cold, the residual is b itself. */
         if (c.cold && f->b_norm < 0.0)
             f->b_norm = rr > 0.0 ? sqrt(rr) : 1.0;

@@ -45,18 +45,37 @@ fg_result fg_field_sample(const fg_field *f, const double *pts, size_t n, double
     return FG_OK;
 }
 
+/* Whether row (j, k) of the labels holds an ORIGIN node, for the rows
+ * (0 outside the grid). */
+static int row_has_origin(const uint8_t *rows, const int *n, int j, int k)
+{
+    return j >= 0 && j < n[1] && k >= 0 && k < n[2] && rows[j + (size_t)n[1] * (size_t)k];
+}
+
 /* The free face neighbours of ORIGIN nodes, found by one pass over the
- * labels and kept until the labels change. */
+ * labels and kept until the labels change. Only rows next to a row with
+ * an ORIGIN node (or it) can hold one. */
 static fg_result find_origin_sites(fg_field *f)
 {
     const fg_level *L = &f->level[0];
     const int *n = L->n;
     size_t sy = (size_t)n[0], sz = sy * (size_t)n[1], count = 0;
     const uint8_t *lab = f->label;
+    uint8_t *rows = malloc((size_t)n[1] * (size_t)n[2]);
+    if (!rows)
+        return FG_ERR_NO_MEMORY;
+    for (int k = 0; k < n[2]; k++)
+        for (int j = 0; j < n[1]; j++)
+            rows[j + (size_t)n[1] * (size_t)k] =
+                memchr(lab + fg_level_index(L, 0, j, k), FG_REGION_ORIGIN, sy) != NULL;
     for (int pass = 0; pass < 2; pass++) {
         count = 0;
         for (int k = 0; k < n[2]; k++)
-            for (int j = 0; j < n[1]; j++)
+            for (int j = 0; j < n[1]; j++) {
+                if (!row_has_origin(rows, n, j, k) && !row_has_origin(rows, n, j - 1, k) &&
+                    !row_has_origin(rows, n, j + 1, k) && !row_has_origin(rows, n, j, k - 1) &&
+                    !row_has_origin(rows, n, j, k + 1))
+                    continue;
                 for (int i = 0; i < n[0]; i++) {
                     size_t id = fg_level_index(L, i, j, k);
                     if (lab[id] != FG_REGION_FREE)
@@ -75,13 +94,17 @@ static fg_result find_origin_sites(fg_field *f)
                     }
                     count++;
                 }
+            }
         if (pass == 0) {
             free(f->sites);
             f->sites = malloc((count ? count : 1) * 3 * sizeof(double));
-            if (!f->sites)
+            if (!f->sites) {
+                free(rows);
                 return FG_ERR_NO_MEMORY;
+            }
         }
     }
+    free(rows);
     f->site_count = count;
     f->sites_valid = 1;
     return FG_OK;

@@ -133,59 +133,77 @@ static inline void sweep_block(const sweep_run *r, int t)
     fg_vf_store(r->x + t, fg_vf_load(r->inv + t) * v);
 }
 
-void fg_fine_sweep(const fg_level *L, float *e, const float *rhs, int color)
+/* Plane k of a Gauss-Seidel half-sweep over the nodes of one colour. */
+static void sweep_plane(const fg_level *L, float *e, const float *rhs, int color, int k)
 {
-    for (int k = 0; k < L->n[2]; k++)
-        for (int j = 0; j < L->n[1]; j++) {
-            const fine_row f = row_of(L, j, k);
-            const int h = (color + j + k) & 1;
-            const half s = half_of(&f, h);
-            float *x = e + f.at + s.first;
-            const sweep_run r = {x,
-                                 e + f.at + s.other + s.west,
-                                 x + f.south,
-                                 x + f.north,
-                                 x + f.down,
-                                 x + f.up,
-                                 rhs + f.at + s.first,
-                                 L->inv_diag + f.at + s.first,
-                                 fg_vf_set(f.cx),
-                                 fg_vf_set(f.cy),
-                                 fg_vf_set(f.cz),
-                                 fg_vf_set(f.unscale)};
-            int t = s.lo;
-            for (; t + FG_VF_LANES <= s.hi; t += FG_VF_LANES)
-                sweep_block(&r, t);
-            if (part_left(&s, t))
-                sweep_block(&r, s.hi - FG_VF_LANES);
-            for (int u = 0; u < s.lo; u++)
-                x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
-            for (int u = after_blocks(&s); u < s.count; u++)
-                x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
-        }
+    for (int j = 0; j < L->n[1]; j++) {
+        const fine_row f = row_of(L, j, k);
+        const int h = (color + j + k) & 1;
+        const half s = half_of(&f, h);
+        float *x = e + f.at + s.first;
+        const sweep_run r = {x,
+                             e + f.at + s.other + s.west,
+                             x + f.south,
+                             x + f.north,
+                             x + f.down,
+                             x + f.up,
+                             rhs + f.at + s.first,
+                             L->inv_diag + f.at + s.first,
+                             fg_vf_set(f.cx),
+                             fg_vf_set(f.cy),
+                             fg_vf_set(f.cz),
+                             fg_vf_set(f.unscale)};
+        int t = s.lo;
+        for (; t + FG_VF_LANES <= s.hi; t += FG_VF_LANES)
+            sweep_block(&r, t);
+        if (part_left(&s, t))
+            sweep_block(&r, s.hi - FG_VF_LANES);
+        for (int u = 0; u < s.lo; u++)
+            x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
+        for (int u = after_blocks(&s); u < s.count; u++)
+            x[u] = relaxed(L, &f, e, rhs, 2 * u + h);
+    }
 }
 
-void fg_fine_sweep_from_zero(const fg_level *L, float *e, const float *rhs)
+/* Plane k of the first red half-sweep from e = 0 (black nodes 0). */
+static void sweep_plane_from_zero(const fg_level *L, float *e, const float *rhs, int k)
 {
-    for (int k = 0; k < L->n[2]; k++)
-        for (int j = 0; j < L->n[1]; j++) {
-            const fine_row f = row_of(L, j, k);
-            const half s = half_of(&f, (j + k) & 1), other = half_of(&f, (j + k + 1) & 1);
-            float *x = e + f.at + s.first;
-            const float *b = rhs + f.at + s.first, *inv = L->inv_diag + f.at + s.first;
-            const fg_vf up = fg_vf_set(f.unscale);
-            int t = 0;
-            for (; t + FG_VF_LANES <= s.count; t += FG_VF_LANES)
-                fg_vf_store(x + t, fg_vf_load(inv + t) * (fg_vf_load(b + t) * up));
-            for (; t < s.count; t++)
-                x[t] = inv[t] * (b[t] * f.unscale);
-            /* A row's end nodes have their right-hand side doubled again. */
-            int ends[2] = {0, f.n - 1};
-            for (int a = 0; a < 2; a++)
-                if ((ends[a] & 1) == ((j + k) & 1))
-                    x[ends[a] / 2] =
-                        inv[ends[a] / 2] * (b[ends[a] / 2] * unscale_at(&f, ends[a]));
-            memset(e + f.at + other.first, 0, (size_t)other.count * sizeof *e);
+    for (int j = 0; j < L->n[1]; j++) {
+        const fine_row f = row_of(L, j, k);
+        const half s = half_of(&f, (j + k) & 1), other = half_of(&f, (j + k + 1) & 1);
+        float *x = e + f.at + s.first;
+        const float *b = rhs + f.at + s.first, *inv = L->inv_diag + f.at + s.first;
+        const fg_vf up = fg_vf_set(f.unscale);
+        int t = 0;
+        for (; t + FG_VF_LANES <= s.count; t += FG_VF_LANES)
+            fg_vf_store(x + t, fg_vf_load(inv + t) * (fg_vf_load(b + t) * up));
+        for (; t < s.count; t++)
+            x[t] = inv[t] * (b[t] * f.unscale);
+        /* A row's end nodes have their right-hand side doubled again. */
+        int ends[2] = {0, f.n - 1};
+        for (int a = 0; a < 2; a++)
+            if ((ends[a] & 1) == ((j + k) & 1))
+                x[ends[a] / 2] = inv[ends[a] / 2] * (b[ends[a] / 2] * unscale_at(&f, ends[a]));
+        memset(e + f.at + other.first, 0, (size_t)other.count * sizeof *e);
+    }
+}
+
+/* Half-sweep t works on plane k - t while half-sweep t - 1 is on the plane
+ * above: the planes it reads are then done by the one before and not yet
+ * by the ones after, as in count sweeps one after another, and e, rhs
+ * and inv_diag pass through the cache once for all of them. */
+void fg_fine_smooth(const fg_level *L, float *e, const float *rhs, int color, int count,
+                    int from_zero)
+{
+    for (int step = 0; step < L->n[2] + count - 1; step++)
+        for (int t = 0; t < count; t++) {
+            int k = step - t;
+            if (k < 0 || k >= L->n[2])
+                continue;
+            if (t == 0 && from_zero)
+                sweep_plane_from_zero(L, e, rhs, k);
+            else
+                sweep_plane(L, e, rhs, (color + t) & 1, k);
         }
 }
 

@@ -64,18 +64,35 @@ typedef struct row_view {
     int size;
 } row_view;
 
-/* The residual at the block of lanes from node i, stored in out; returns
- * its square. */
+/* The residual at the block of lanes from node i (0 on Dirichlet nodes). */
 static inline fg_vd residual_block(const row_view *w, int i)
 {
     fg_vd v = w->cx * (fg_vd_load(w->x + i - 1) + fg_vd_load(w->x + i + 1)) +
               w->cy * (fg_vd_load(w->s + i) + fg_vd_load(w->n + i)) +
               w->cz * (fg_vd_load(w->d + i) + fg_vd_load(w->u + i)) - w->dg * fg_vd_load(w->x + i);
-    v = fg_vd_select(fg_vl_zero_bytes(w->m + i), v * w->scale, fg_vd_set(0.0));
+    return fg_vd_select(fg_vl_zero_bytes(w->m + i), v * w->scale, fg_vd_set(0.0));
+}
+
+/* The residual v of the block from node i into the row's out (split), if
+ * it has one. */
+static inline void store_block(const row_view *w, int i, fg_vd v)
+{
     if (w->out)
         for (int l = 0; l < FG_VD_LANES; l++)
             w->out[fg_split(w->size, i + l)] = (float)fg_vd_lane(v, l);
-    return v * v;
+}
+
+/* The same for v0 from node i and v1 of the next block. */
+static inline void store_blocks(const row_view *w, int i, fg_vd v0, fg_vd v1)
+{
+#ifdef FG_FIELD_SPLIT_VECTORS
+    if (w->out)
+        fg_vd_store_split(w->out + fg_split(w->size, i), w->out + fg_split(w->size, i + 1), v0,
+                          v1);
+#else
+    store_block(w, i, v0);
+    store_block(w, i + FG_VD_LANES, v1);
+#endif
 }
 
 /* One row of fg_lap_residual with phi as it is; returns the squared norm.
@@ -102,11 +119,16 @@ static double residual_row(const fg_level *L, const double *x, const fg_row *r, 
     fg_vd acc0 = fg_vd_set(0.0), acc1 = acc0;
     int i = 1;
     for (; i + 2 * FG_VD_LANES <= n - 1; i += 2 * FG_VD_LANES) {
-        acc0 += residual_block(&w, i);
-        acc1 += residual_block(&w, i + FG_VD_LANES);
+        fg_vd v0 = residual_block(&w, i), v1 = residual_block(&w, i + FG_VD_LANES);
+        store_blocks(&w, i, v0, v1);
+        acc0 += v0 * v0;
+        acc1 += v1 * v1;
     }
-    for (; i + FG_VD_LANES <= n - 1; i += FG_VD_LANES)
-        acc0 += residual_block(&w, i);
+    for (; i + FG_VD_LANES <= n - 1; i += FG_VD_LANES) {
+        fg_vd v = residual_block(&w, i);
+        store_block(&w, i, v);
+        acc0 += v * v;
+    }
     acc0 += acc1;
     double sum = 0.0;
     for (int l = 0; l < FG_VD_LANES; l++)
@@ -157,25 +179,29 @@ double fg_lap_residual(const fg_level *L, const double *phi, int zero_free, floa
     double sum = 0.0;
     for (int k = 0; k < L->n[2]; k++)
         sum += residual_plane(L, phi, zero_free, k, out);
+    fg_simd_leave();
     return sum;
 }
 
-/* phi += e (split rows) on the free nodes of plane k, a row's even nodes
- * and then its odd ones; the Dirichlet nodes keep their values. */
+/* phi += e (split rows) on plane k, a row's even nodes and then its odd
+ * ones. e is 0 on the Dirichlet nodes (every kernel leaves it so), so
+ * adding it everywhere keeps their values. */
 static void correct_plane(const fg_level *L, double *phi, const float *e, int k)
 {
     const size_t n = (size_t)L->n[0], ne = (n + 1) / 2;
     for (int j = 0; j < L->n[1]; j++) {
         size_t row = fg_level_index(L, 0, j, k);
         double *x = phi + row;
-        const uint8_t *m = L->mask + row;
         const float *even = e + row, *odd = e + row + ne;
-        for (size_t u = 0; u < ne; u++)
-            if (!m[2 * u])
-                x[2 * u] += even[u];
-        for (size_t u = 0; u < n / 2; u++)
-            if (!m[2 * u + 1])
-                x[2 * u + 1] += odd[u];
+        size_t u = 0;
+#ifdef FG_FIELD_SPLIT_VECTORS
+        for (; 2 * u + 2 * FG_VF_LANES <= n; u += FG_VF_LANES)
+            fg_vd_add_interleaved(x + 2 * u, even + u, odd + u);
+#endif
+        for (size_t v = u; v < ne; v++)
+            x[2 * v] += even[v];
+        for (size_t v = u; v < n / 2; v++)
+            x[2 * v + 1] += odd[v];
     }
 }
 
@@ -190,8 +216,13 @@ double fg_lap_correct_residual(const fg_level *L, double *phi, const float *e, f
             correct_plane(L, phi, e, k + 1);
         sum += residual_plane(L, phi, 0, k, out);
     }
+    fg_simd_leave();
     return sum;
 }
+
+/* The relaxations in double are not vector kernels: the AVX2 build
+ * (kernels_avx2.h) leaves them out. */
+#ifndef FG_SIMD_WIDE
 
 /* Over-relaxed Gauss-Seidel at free node i of row r. */
 static inline void relax_at(const fg_level *L, double *xr, const fg_row *r, int i, double omega,
@@ -250,3 +281,5 @@ void fg_lap_relax_box(const fg_level *L, double *x, int ci, int cj, int ck, int 
                         relax_at(L, x + r.at, &r, i, 1.0, dg);
                 }
 }
+
+#endif

@@ -65,6 +65,7 @@ fg_result fg_multigrid_init(fg_field *f)
     L0->count = (size_t)L0->n[0] * (size_t)L0->n[1] * (size_t)L0->n[2];
     L0->mask = f->label;
     L0->split = 1;
+    f->kernels = fg_field_kernels_pick();
     L0->inv_diag = calloc(L0->count, sizeof(float));
     if (!L0->inv_diag)
         return FG_ERR_NO_MEMORY;
@@ -104,61 +105,59 @@ void fg_multigrid_deinit(fg_field *f)
     f->levels = 0;
 }
 
-/* The kernels of level l: the grid's own on level 0, the assembled
- * operator's below. */
-static void sweep_from_zero(const fg_level *L, int l)
+const fg_field_kernels fg_field_kernels_portable = {
+    fg_lap_residual,   fg_lap_correct_residual,   fg_fine_smooth,
+    fg_fine_residual,  fg_coarse_sweep_from_zero, fg_coarse_sweep,
+    fg_coarse_residual, fg_restrict,              fg_prolong_add,
+};
+
+const fg_field_kernels *fg_field_kernels_pick(void)
 {
-    if (l == 0)
-        fg_fine_sweep_from_zero(L, L->e, L->rhs);
-    else
-        fg_coarse_sweep_from_zero(L);
+#ifdef FG_FIELD_AVX2
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx2"))
+        return &fg_field_kernels_avx2;
+#endif
+    return &fg_field_kernels_portable;
 }
 
-static void sweep(const fg_level *L, int l, int color)
+/* count half-sweeps on level l, of colour color first and then
+ * alternating; from_zero (color 0): the first from e = 0. */
+static void smooth(const fg_field_kernels *k, const fg_level *L, int l, int color, int count,
+                   int from_zero)
 {
-    if (l == 0)
-        fg_fine_sweep(L, L->e, L->rhs, color);
-    else
-        fg_coarse_sweep(L, color);
-}
-
-static void residual(const fg_level *L, int l)
-{
-    if (l == 0)
-        fg_fine_residual(L, L->e, L->rhs, L->tmp);
-    else
-        fg_coarse_residual(L);
-}
-
-/* times sweeps, each a half-sweep of one colour and one of the other. */
-static void smooth(const fg_level *L, int l, int first_color, int times)
-{
-    for (int t = 0; t < times; t++) {
-        sweep(L, l, first_color);
-        sweep(L, l, 1 - first_color);
+    if (l == 0) {
+        k->fine_smooth(L, L->e, L->rhs, color, count, from_zero);
+        return;
+    }
+    for (int t = 0; t < count; t++) {
+        if (t == 0 && from_zero)
+            k->coarse_sweep_from_zero(L);
+        else
+            k->coarse_sweep(L, (color + t) & 1);
     }
 }
 
-/* e = M rhs on level l, from e = 0. */
+/* e = M rhs on level l, from e = 0: red-black sweeps down, black-red up. */
 static void cycle(fg_field *f, int l)
 {
+    const fg_field_kernels *k = f->kernels;
     const fg_level *L = &f->level[l];
-    /* The first red half-sweep from e = 0, then the rest of the first
-     * red-black sweep. */
-    sweep_from_zero(L, l);
-    sweep(L, l, 1);
     if (l == f->levels - 1) {
-        smooth(L, l, 0, COARSEST_SWEEPS - 1);
-        smooth(L, l, 1, COARSEST_SWEEPS);
+        smooth(k, L, l, 0, 2 * COARSEST_SWEEPS, 1);
+        smooth(k, L, l, 1, 2 * COARSEST_SWEEPS, 0);
         return;
     }
     fg_level *C = &f->level[l + 1];
-    smooth(L, l, 0, 1);
-    residual(L, l);
-    fg_restrict(L, L->tmp, C);
+    smooth(k, L, l, 0, 4, 1);
+    if (l == 0)
+        k->fine_residual(L, L->e, L->rhs, L->tmp);
+    else
+        k->coarse_residual(L);
+    k->restrict_down(L, L->tmp, C);
     cycle(f, l + 1);
-    fg_prolong_add(C, L, L->e);
-    smooth(L, l, 1, 2);
+    k->prolong_add(C, L, L->e);
+    smooth(k, L, l, 1, 4, 0);
 }
 
 void fg_multigrid_cycle(fg_field *f, float *rhs, float *e)

@@ -10,7 +10,12 @@
  * written: a vector kernel gives the same floats as the same expression on
  * scalars (no reassociation; nothing is contracted into FMAs unless the
  * compiler is told to). Where the compiler has lane shuffles,
- * FG_VF_SHUFFLE is defined with a 4 x 4 transpose and an even/odd split. */
+ * FG_VF_SHUFFLE is defined with a 4 x 4 transpose and an even/odd split.
+ *
+ * A file built for AVX2 (with -mavx2, chosen at run time: see
+ * field/kernels_avx2.h) may define FG_SIMD_WIDE before it includes this
+ * header: eight floats and four doubles, the same lane-by-lane
+ * arithmetic, and no FG_VF_SHUFFLE. */
 #ifndef FULGUR_UTIL_FG_SIMD_H
 #define FULGUR_UTIL_FG_SIMD_H
 
@@ -18,6 +23,28 @@
 #include <string.h>
 
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(FG_SIMD_SCALAR)
+
+#ifdef FG_SIMD_WIDE
+
+#define FG_VF_LANES 8
+#define FG_VD_LANES 4
+
+typedef float fg_vf __attribute__((vector_size(32)));
+typedef int32_t fg_vi __attribute__((vector_size(32)));
+typedef double fg_vd __attribute__((vector_size(32)));
+typedef int64_t fg_vl __attribute__((vector_size(32)));
+
+static inline fg_vf fg_vf_set(float x)
+{
+    return (fg_vf){x, x, x, x, x, x, x, x};
+}
+
+static inline fg_vd fg_vd_set(double x)
+{
+    return (fg_vd){x, x, x, x};
+}
+
+#else
 
 #define FG_VF_LANES 4
 #define FG_VD_LANES 2
@@ -37,7 +64,9 @@ static inline fg_vd fg_vd_set(double x)
     return (fg_vd){x, x};
 }
 
-#if defined(__has_builtin)
+#endif
+
+#if defined(__has_builtin) && !defined(FG_SIMD_WIDE)
 #if __has_builtin(__builtin_shufflevector)
 /* Lane shuffles (Clang, GCC 12 and later). */
 #define FG_VF_SHUFFLE 1

@@ -1,0 +1,4 @@
+/* coarse_kernels.c built for AVX2 (kernels_avx2.h). */
+#include "kernels_avx2.h"
+
+#include "coarse_kernels.c"

@@ -1,0 +1,4 @@
+/* transfer.c built for AVX2 (kernels_avx2.h). */
+#include "kernels_avx2.h"
+
+#include "transfer.c"
