@@ -92,8 +92,9 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
     c->lanes = alloc_floats(n * V);
     c->work = alloc_floats(n * V);
     c->zeros = alloc_floats(n);
-    if (!c->filter || !c->history || !c->live || !c->quiet || !c->fed || !c->in || !c->out || !c->acc || !c->pairs ||
-        !c->lanes || !c->work || !c->zeros || !transform_filter(c, length, filter)) {
+    if (!c->filter || !c->history || !c->live || !c->quiet || !c->fed || !c->in || !c->out ||
+        !c->acc || !c->pairs || !c->lanes || !c->work || !c->zeros ||
+        !transform_filter(c, length, filter)) {
         fg_convolver_deinit(c);
         return false;
     }
