@@ -93,11 +93,28 @@ static size_t onset(const float *taps, size_t length)
     return t;
 }
 
+/* A fourth-order Linkwitz-Riley crossover at fc, bin by bin: the
+ * response above it goes through high[], the flat delayed one below
+ * through low[]; low + high is one all-pass, the same for every response,
+ * so interaural differences are kept. */
+static void crossover(const eq_work *w, size_t bc, double fs, double complex *low,
+                      double complex *high)
+{
+    double fc = (double)bc * fs / (double)w->n;
+    for (size_t b = 0; b < w->bins; b++) {
+        double f = (double)b * fs / (double)w->n;
+        double complex s = I * f / fc, butter = 1.0 / (s * s + sqrt(2.0) * s + 1.0);
+        low[b] = butter * butter;
+        high[b] = s * s * s * s * butter * butter;
+    }
+}
+
 /* One response: times the equalizer, and below the crossover bin bc a
  * unit impulse delayed to the response's phase there (the head
  * transparent), back to its length with its end faded. */
 static void equalize(eq_work *w, float *taps, size_t length, const double complex *filter,
-                     size_t bc, double fs)
+                     const double complex *low, const double complex *high, size_t bc,
+                     double fs)
 {
     double tau0 = (double)onset(taps, length) / fs;
     spectrum(w, taps, length);
@@ -110,14 +127,9 @@ static void equalize(eq_work *w, float *taps, size_t length, const double comple
     double tau = (2.0 * PI * k - phase) / (2.0 * PI * fc);
     if (tau < 0.0)
         tau += 1.0 / fc;
-    /* a fourth-order Linkwitz-Riley crossover at fc: the response above,
-     * the flat delayed one below; low + high is one all-pass, the same for
-     * every response, so interaural differences are kept */
     for (size_t b = 0; b < w->bins; b++) {
         double f = (double)b * fs / (double)w->n;
-        double complex s = I * f / fc, butter = 1.0 / (s * s + sqrt(2.0) * s + 1.0);
-        double complex low = butter * butter, high = s * s * s * s * butter * butter;
-        w->freq[b] = high * w->freq[b] + low * cexp(-2.0 * PI * I * f * tau);
+        w->freq[b] = high[b] * w->freq[b] + low[b] * cexp(-2.0 * PI * I * f * tau);
     }
     fftw_execute(w->inverse);
     size_t fade_from = (size_t)((1.0 - FADE_SHARE) * (double)length);
@@ -136,10 +148,11 @@ int hrir_equalize(const fg_hrir_set *set, float *left, float *right, double file
     const double fs = set->sample_rate_hz;
     eq_work w;
     double *power = NULL;
-    double complex *filter = NULL;
+    double complex *filter = NULL, *low = NULL, *high = NULL;
     int rc = -1;
     if (work_init(&w, length) != 0 || !(power = calloc(w.bins, sizeof *power)) ||
-        !(filter = malloc(w.bins * sizeof *filter))) {
+        !(filter = malloc(w.bins * sizeof *filter)) || !(low = malloc(w.bins * sizeof *low)) ||
+        !(high = malloc(w.bins * sizeof *high))) {
         snprintf(why, why_size, "equalizing the responses: out of memory");
         goto done;
     }
@@ -163,14 +176,17 @@ int hrir_equalize(const fg_hrir_set *set, float *left, float *right, double file
             power[b] = power[bc]; /* a notch shared by every response: left as it is */
     }
     inverse_min_phase(&w, power, filter);
+    crossover(&w, bc, fs, low, high);
     for (size_t s = 0; s < count; s++) {
-        equalize(&w, left + s * length, length, filter, bc, fs);
-        equalize(&w, right + s * length, length, filter, bc, fs);
+        equalize(&w, left + s * length, length, filter, low, high, bc, fs);
+        equalize(&w, right + s * length, length, filter, low, high, bc, fs);
     }
     rc = 0;
 done:
     work_free(&w);
     free(power);
     free(filter);
+    free(low);
+    free(high);
     return rc;
 }

@@ -39,28 +39,38 @@ static const char *mysofa_reason(int code)
     }
 }
 
-/* n taps at the file's rate to *out_n at rate_hz (ratio > 0). */
-static float *convert(const float *in, size_t n, double ratio, size_t out_n, char *why,
-                      size_t why_size)
+/* Every response of the set (m measurements x 2 ears of n taps at the
+ * file's rate, as Data.IR holds them) to taps at ratio times that rate,
+ * into left and right (m x taps each). One converter state serves them
+ * all, reset between responses: a sinc converter's buffers are large to
+ * make. 0, or -1 with why. */
+static int convert(const float *ir, unsigned m, unsigned n, double ratio, size_t taps,
+                   float *left, float *right, char *why, size_t why_size)
 {
-    float *out = calloc(out_n, sizeof *out);
-    if (!out) {
-        snprintf(why, why_size, "out of memory");
-        return NULL;
-    }
-    if (ratio == 1.0) {
-        memcpy(out, in, n * sizeof *out);
-        return out;
-    }
-    SRC_DATA src = {.data_in = in, .input_frames = (long)n, .data_out = out,
-                    .output_frames = (long)out_n, .src_ratio = ratio, .end_of_input = 1};
-    int e = src_simple(&src, SRC_SINC_BEST_QUALITY, 1);
-    if (e != 0) {
+    int e = 0;
+    SRC_STATE *state = ratio == 1.0 ? NULL : src_new(SRC_SINC_BEST_QUALITY, 1, &e);
+    if (ratio != 1.0 && !state) {
         snprintf(why, why_size, "resampling failed: %s", src_strerror(e));
-        free(out);
-        return NULL;
+        return -1;
     }
-    return out;
+    for (size_t r = 0; e == 0 && r < 2 * (size_t)m; r++) { /* response r = 2s + ear */
+        float *to = (r % 2 == 0 ? left : right) + r / 2 * taps;
+        memset(to, 0, taps * sizeof *to);
+        if (!state) {
+            memcpy(to, ir + r * n, n * sizeof *to);
+            continue;
+        }
+        SRC_DATA src = {.data_in = ir + r * n, .input_frames = (long)n, .data_out = to,
+                        .output_frames = (long)taps, .src_ratio = ratio, .end_of_input = 1};
+        e = src_reset(state);
+        if (e == 0)
+            e = src_process(state, &src);
+    }
+    if (e != 0)
+        snprintf(why, why_size, "resampling failed: %s", src_strerror(e));
+    if (state)
+        src_delete(state);
+    return e == 0 ? 0 : -1;
 }
 
 /* The dimensions the engine needs, each named when wrong: 0, or -1 with
@@ -112,7 +122,7 @@ static int take(struct MYSOFA_HRTF *hrtf, double rate_hz, sofa_hrirs *out, char 
 {
     if (check_dimensions(hrtf, why, why_size) != 0)
         return -1;
-    const unsigned m = hrtf->M, r = hrtf->R, n = hrtf->N;
+    const unsigned m = hrtf->M, n = hrtf->N; /* R is 2: check_dimensions */
     const char *units = mysofa_getAttribute(hrtf->DataSamplingRate.attributes, "Units");
     if (units && strcmp(units, "hertz") != 0) {
         snprintf(why, why_size, "Data.SamplingRate in \"%s\": expected \"hertz\"", units);
@@ -158,16 +168,10 @@ static int take(struct MYSOFA_HRTF *hrtf, double rate_hz, sofa_hrirs *out, char 
         }
         for (int j = 0; j < 3; j++)
             out->direction[3 * (size_t)s + j] = p[j];
-        for (unsigned ear = 0; ear < 2; ear++) {
-            const float *ir = hrtf->DataIR.values + ((size_t)s * r + ear) * n;
-            float *c = convert(ir, n, ratio, taps, why, why_size);
-            if (!c)
-                return -1;
-            memcpy((ear == 0 ? out->left : out->right) + (size_t)s * taps, c,
-                   taps * sizeof *c);
-            free(c);
-        }
     }
+    if (convert(hrtf->DataIR.values, m, n, ratio, taps, out->left, out->right, why,
+                why_size) != 0)
+        return -1;
     out->file_rate_hz = file_rate;
     out->set = (fg_hrir_set){.sample_rate_hz = rate_hz, .count = m, .length = (uint32_t)taps,
                              .direction = out->direction, .left = out->left,
