@@ -248,18 +248,21 @@ static int read_number(cursor *c, double *out)
     return 1;
 }
 
-/* The elements of the array whose '[' is at p: the '[' one level inside
- * it, up to its ']' or the text's end. Exact for an array this reader
- * takes (numbers, brackets, commas, space: no string to skip); for any
- * other it is only where the array's storage starts (read_nodes). */
-static size_t count_elements(const char *p, const char *end)
+/* The elements of the array whose elements begin at c.p (past its '['):
+ * each '[' at the start or after a ',' up to its first ']' (memchr), as
+ * long as a ',' follows. Exact for an array this reader takes (flat
+ * elements of numbers); for any other it is only where the array's
+ * storage starts (read_nodes). */
+static size_t count_elements(cursor c)
 {
     size_t count = 0;
-    int depth = 0;
-    for (; p < end; p++) {
-        if (*p == '[')
-            count += ++depth == 2;
-        else if (*p == ']' && --depth == 0)
+    while (take(&c, '[')) {
+        const char *close = memchr(c.p, ']', (size_t)(c.end - c.p));
+        if (!close)
+            break;
+        count++;
+        c.p = close + 1;
+        if (!take(&c, ','))
             break;
     }
     return count;
@@ -274,11 +277,10 @@ static int read_nodes(cursor *c, scene_node_list *list)
     size_t capacity = 0;
     list->nodes = NULL;
     list->count = 0;
-    skip_space(c);
-    const size_t expected = count_elements(c->p, c->end);
     /* an empty list is left to cJSON, which names what is missing */
     if (!take(c, '[') || take(c, ']'))
         return 0;
+    const size_t expected = count_elements(*c);
     do {
         double v[5] = {0};
         int n = 0;
