@@ -40,9 +40,10 @@ typedef struct scene_node_lists scene_node_lists;
 typedef struct scene_discharge {
     /* What fg_engine_post takes, as it takes it: the tree (owned by the
      * scene, from fg_big_calloc (fg_big_alloc.h): explicit, or built by
-     * scene_build; the offset applied; NULL until built), the preset's sound with the overrides, the emit time on
-     * the engine clock, strokes (0: drawn by the engine), the continuous
-     * repeat (duration 0: until the scene ends), the seed, the propagation
+     * scene_build; the offset applied; NULL until built), the preset's
+     * sound with the overrides, the emit time on the engine clock, strokes
+     * (0: drawn by the engine), the continuous repeat (duration 0: until
+     * the scene ends), the seed, the propagation
      * (the scene's, with this discharge's keys over it) and the model. */
     fg_discharge post;
     fg_preset preset;

@@ -1,7 +1,6 @@
 #define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <math.h>
 #include <stddef.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "bus_internal.h"
