@@ -39,10 +39,11 @@ typedef struct scene_node_lists scene_node_lists;
 /* One discharge of the scene: what is posted, and where it came from. */
 typedef struct scene_discharge {
     /* What fg_engine_post takes, as it takes it: the tree (owned by the
-     * scene: explicit, or built by scene_build; the offset applied; NULL
-     * until built), the preset's sound with the overrides, the emit time on
-     * the engine clock, strokes (0: drawn by the engine), the continuous
-     * repeat (duration 0: until the scene ends), the seed, the propagation
+     * scene, from fg_big_calloc (fg_big_alloc.h): explicit, or built by
+     * scene_build; the offset applied; NULL until built), the preset's
+     * sound with the overrides, the emit time on the engine clock, strokes
+     * (0: drawn by the engine), the continuous repeat (duration 0: until
+     * the scene ends), the seed, the propagation
      * (the scene's, with this discharge's keys over it) and the model. */
     fg_discharge post;
     fg_preset preset;

@@ -1,7 +1,9 @@
 /* The build step: each generator object becomes a tree. */
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <stdlib.h>
 #include <string.h>
 
+#include "fg_big_alloc.h"
 #include "generator.h"
 #include "scene_internal.h"
 
@@ -32,7 +34,7 @@ static int generate(const scene *s, size_t index, scene_discharge *d, char *err,
         goto done;
     }
     size_t n = fg_tree_count(tree);
-    fg_node *nodes = malloc((n ? n : 1) * sizeof *nodes);
+    fg_node *nodes = fg_big_calloc(n ? n : 1, sizeof *nodes);
     if (!nodes) {
         json_fail(err, err_size, path, "out of memory");
         goto done;
@@ -40,7 +42,7 @@ static int generate(const scene *s, size_t index, scene_discharge *d, char *err,
     memcpy(nodes, fg_tree_nodes(tree), n * sizeof *nodes);
     fg_tree_translate(nodes, n, d->offset_m);
     if (scene_check_tree(nodes, n, nodes_path, err, err_size)) {
-        free(nodes);
+        fg_big_free(nodes);
         goto done;
     }
     d->post.nodes = nodes;

@@ -1,9 +1,11 @@
 /* One discharge: when, which preset with which overrides, strokes or a
  * continuous repeat, its seed, and where its tree comes from. */
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "fg_big_alloc.h"
 #include "generator.h"
 #include "scene_internal.h"
 #include "fg_rng.h"
@@ -126,7 +128,7 @@ static int parse_source(const cJSON *obj, const char *base, scene_node_lists *li
 
 void scene_discharge_free_tree(scene_discharge *d)
 {
-    free((fg_node *)d->post.nodes);
+    fg_big_free((fg_node *)d->post.nodes);
     d->post.nodes = NULL;
     d->post.node_count = 0;
 }

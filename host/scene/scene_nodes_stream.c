@@ -17,12 +17,14 @@
  * usual message with its JSON path. So the errors are those of the cJSON
  * path by construction, and the values too: a number is converted exactly
  * (correctly rounded, as the C library's strtod, which cJSON uses). */
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <float.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "fg_array.h"
+#include "fg_big_alloc.h"
 #include "scene_internal.h"
 
 /* cJSON reads at most 63 characters of a number. */
@@ -246,8 +248,30 @@ static int read_number(cursor *c, double *out)
     return 1;
 }
 
+/* The elements of the array whose elements begin at c.p (past its '['):
+ * each '[' at the start or after a ',' up to its first ']' (memchr), as
+ * long as a ',' follows. Exact for an array this reader takes (flat
+ * elements of numbers); for any other it is only where the array's
+ * storage starts (read_nodes). */
+static size_t count_elements(cursor c)
+{
+    size_t count = 0;
+    while (take(&c, '[')) {
+        const char *close = memchr(c.p, ']', (size_t)(c.end - c.p));
+        if (!close)
+            break;
+        count++;
+        c.p = close + 1;
+        if (!take(&c, ','))
+            break;
+    }
+    return count;
+}
+
 /* One "nodes" array at c->p ('[') into *list; 0 (c->p anywhere, nothing
- * allocated) if it is not one this reader takes. */
+ * allocated) if it is not one this reader takes. The nodes are counted
+ * first, so that their storage is allocated once at its size
+ * (fg_big_alloc.h: a big tree's in huge pages), not grown and copied. */
 static int read_nodes(cursor *c, scene_node_list *list)
 {
     size_t capacity = 0;
@@ -256,6 +280,7 @@ static int read_nodes(cursor *c, scene_node_list *list)
     /* an empty list is left to cJSON, which names what is missing */
     if (!take(c, '[') || take(c, ']'))
         return 0;
+    const size_t expected = count_elements(*c);
     do {
         double v[5] = {0};
         int n = 0;
@@ -267,8 +292,8 @@ static int read_nodes(cursor *c, scene_node_list *list)
         } while (take(c, ','));
         if (!take(c, ']') || !scene_node_values(v, n))
             goto refuse;
-        fg_node *grown =
-            fg_array_grow(list->nodes, &capacity, list->count + 1, sizeof *grown, 1024);
+        fg_node *grown = fg_big_grow(list->nodes, &capacity, list->count + 1, sizeof *grown,
+                                     expected > 0 ? expected : 1);
         if (!grown)
             goto refuse;
         list->nodes = grown;
@@ -277,7 +302,7 @@ static int read_nodes(cursor *c, scene_node_list *list)
     if (take(c, ']'))
         return 1;
 refuse:
-    free(list->nodes);
+    fg_big_free(list->nodes);
     list->nodes = NULL;
     list->count = 0;
     return 0;
@@ -288,7 +313,7 @@ static int add_list(scene_node_lists *lists, size_t *capacity, scene_node_list l
     scene_node_list *grown =
         fg_array_grow(lists->list, capacity, lists->count + 1, sizeof *grown, 16);
     if (!grown) {
-        free(list.nodes);
+        fg_big_free(list.nodes);
         return 0;
     }
     lists->list = grown;
@@ -430,7 +455,7 @@ int scene_node_lists_take(scene_node_lists *lists, const cJSON *nodes_json, fg_n
 void scene_node_lists_free(scene_node_lists *lists)
 {
     for (size_t i = 0; i < lists->count; i++)
-        free(lists->list[i].nodes);
+        fg_big_free(lists->list[i].nodes);
     free(lists->list);
     memset(lists, 0, sizeof *lists);
 }

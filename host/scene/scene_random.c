@@ -7,10 +7,12 @@
  * the count can be checked before anything runs. Times are a Poisson
  * process of rate rate_hz over [start, end); places are uniform in the
  * region box, added to the template's offset. */
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "fg_big_alloc.h"
 #include "scene_internal.h"
 #include "fg_rng.h"
 #include "fg_array.h"
@@ -88,14 +90,14 @@ static int instantiate(const scene_discharge *tpl, double t, const double shift[
     if (!tpl->post.nodes)
         return 0; /* a generator: scene_build applies the offset */
     size_t n = tpl->post.node_count;
-    fg_node *nodes = malloc(n * sizeof *nodes);
+    fg_node *nodes = fg_big_calloc(n, sizeof *nodes);
     if (!nodes)
         return json_fail(err, err_size, "random", "out of memory");
     memcpy(nodes, tpl->post.nodes, n * sizeof *nodes);
     fg_tree_translate(nodes, n, shift);
     char why[JSON_PATH_MAX + 128];
     if (scene_check_tree(nodes, n, "random.tree.nodes", why, sizeof why)) {
-        free(nodes);
+        fg_big_free(nodes);
         return json_fail(err, err_size, "random.region",
                          "a discharge shifted by [%.16g, %.16g, %.16g] is refused: %s", shift[0],
                          shift[1], shift[2], why);

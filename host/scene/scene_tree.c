@@ -1,7 +1,9 @@
 /* An explicit tree: "nodes": [[x, y, z, parent] or [x, y, z, parent, main]]. */
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "fg_big_alloc.h"
 #include "scene_internal.h"
 
 static const char *const tree_keys[] = {"nodes", NULL};
@@ -64,7 +66,7 @@ int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[
     size_t n;
     if (!scene_node_lists_take(lists, list, &out, &n)) {
         n = (size_t)cJSON_GetArraySize(list);
-        out = malloc((n ? n : 1) * sizeof *out);
+        out = fg_big_calloc(n ? n : 1, sizeof *out);
         if (!out)
             return json_fail(err, err_size, list_path, "out of memory");
         size_t i = 0;
@@ -79,6 +81,6 @@ int scene_parse_tree(const cJSON *item, const char *path, const double offset_m[
     *count = n;
     return 0;
 fail:
-    free(out);
+    fg_big_free(out);
     return -1;
 }

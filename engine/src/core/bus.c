@@ -1,9 +1,10 @@
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <math.h>
 #include <stddef.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "bus_internal.h"
+#include "fg_big_alloc.h"
 #include "fg_prefault.h"
 #include "air/band_filters_internal.h"
 #include "spatial/spherical_head_internal.h"
@@ -38,15 +39,21 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     while (frames < max_frames && 2 * (size_t)frames <= fit)
         frames *= 2;
     max_frames = frames < max_frames ? frames : max_frames;
-    s->d3 = calloc(planes * max_frames, sizeof *s->d3);
-    s->pre = calloc(planes * max_frames, sizeof *s->pre);
-    s->fir = calloc((size_t)(s->count / FG_BUS_PLAIN) * channels, sizeof *s->fir);
-    if (!s->d3 || !s->pre || !s->fir) {
-        fg_bus_set_deinit(s);
+    /* the planes and the FIRs in one allocation (fg_big_alloc.h): stereo's
+     * 0.6 MB at 256 frames took 190 page faults as three */
+    const size_t samples = planes * max_frames;
+    const size_t firs = (size_t)(s->count / FG_BUS_PLAIN) * channels;
+    const size_t bytes = samples * sizeof *s->d3 + firs * sizeof *s->fir +
+                         samples * sizeof *s->pre;
+    _Static_assert(sizeof(double) % _Alignof(fg_abe_fir) == 0 &&
+                       sizeof(fg_abe_fir) % _Alignof(float) == 0,
+                   "the FIRs follow the doubles, the floats the FIRs, each aligned");
+    s->d3 = fg_big_calloc(bytes, 1);
+    if (!s->d3)
         return FG_ERR_NO_MEMORY;
-    }
-    fg_prefault_zeroed(s->d3, planes * max_frames * sizeof *s->d3);
-    fg_prefault_zeroed(s->pre, planes * max_frames * sizeof *s->pre);
+    s->fir = (fg_abe_fir *)(void *)(s->d3 + samples);
+    s->pre = (float *)(void *)(s->fir + firs);
+    fg_prefault_zeroed(s->d3, bytes);
     s->channels = channels;
     s->max_frames = max_frames;
     s->fs_hz = fs_hz;
@@ -78,9 +85,7 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
 
 void fg_bus_set_deinit(fg_bus_set *s)
 {
-    free(s->d3);
-    free(s->pre);
-    free(s->fir);
+    fg_big_free(s->d3);
     s->d3 = NULL;
     s->pre = NULL;
     s->fir = NULL;

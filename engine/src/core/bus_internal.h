@@ -74,7 +74,8 @@ typedef struct fg_bus_set {
     uint32_t max_frames; /* the longest block: the max_frames asked, or fewer to fit
                           * FG_BUS_PLANE_BYTES */
     uint32_t frames;     /* audio thread: the block under way */
-    double *d3;          /* count * channels * max_frames */
+    double *d3;          /* count * channels * max_frames; the allocation (fg_big_alloc.h)
+                          * that fir and pre lie in, after it */
     float *pre;          /* the same count of floats */
     /* filters: shared coefficients, state per ear */
     fg_band_plan plan;

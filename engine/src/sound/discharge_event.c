@@ -49,7 +49,7 @@ static double path_to(const fg_discharge_voice *v, const fg_event *ev, const fg_
     double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     path->r_m = r;
     /* eqs. 3-4 clamp r to r0; the wave still travels the true distance */
-    double travel = r / c, gain = ev->gain;
+    double travel = r / c, gain = ev->image ? pr->ground_reflection : 1.0;
     *slope = 1.0;
     if (pr->refraction_radius_m > 0) {
         travel = fg_refraction_travel_s(ev->mid, ear, pr->refraction_radius_m, c);

@@ -33,7 +33,7 @@
 
 /* Abe's wave as an ear keeps it: what depends on the path. The arrival
  * and the rate are the ear's center_s and rate, the rest fg_abe_defaults'
- * (abe_model.c), so that an event stays 232 bytes, not 328. */
+ * (abe_model.c), so that an event stays 224 bytes, not 328. */
 typedef struct fg_abe_ear {
     double f0_hz;
     double peak_pa;
@@ -67,10 +67,9 @@ typedef struct fg_event {
     double half_len_m;    /* l */
     double t0_s;          /* baseline half-duration with its fluctuation */
     double emit_s;        /* when the return stroke passes the midpoint, plus turbulence */
-    double gain;          /* the ground's reflection coefficient for an image, else 1 */
     double start_s;       /* earliest waveform start, either ear, at the post pose */
-    uint32_t segment;     /* index of the child node, for a stable order */
     bool main;            /* on the main channel */
+    bool image;           /* the ground's image: weaker by the voice's ground_reflection */
     uint64_t serial;      /* the still listener ear[] was evaluated for */
     fg_event_ear ear[2];
 } fg_event;

@@ -93,7 +93,6 @@ static void destroy_store(void *storage)
     if (!s)
         return;
     fg_arena_deinit(&s->arena);
-    fg_big_free(s->scratch.order_tmp);
     fg_big_free(s->scratch.order);
     fg_big_free(s->main_index);
     fg_big_free(s->events);
@@ -113,14 +112,16 @@ static fg_result create_store(const fg_engine_config *cfg, void **storage)
     size_t nodes = (size_t)cfg->segment_capacity + 1;
     s->events = fg_big_calloc(cfg->segment_capacity, sizeof *s->events);
     s->main_index = fg_big_calloc(cfg->segment_capacity, sizeof *s->main_index);
-    s->scratch.order = fg_big_calloc(nodes, sizeof *s->scratch.order);
-    s->scratch.order_tmp = fg_big_calloc(nodes, sizeof *s->scratch.order_tmp);
-    if (s->scratch.order_tmp) {
+    /* the sort and its scratch in one allocation (fg_big_alloc.h): 9 438
+     * segments' two of 151 kB took 74 page faults apart */
+    s->scratch.order = fg_big_calloc(2 * nodes, sizeof *s->scratch.order);
+    if (s->scratch.order) {
+        s->scratch.order_tmp = s->scratch.order + nodes;
         s->scratch.path_m = (double *)(void *)s->scratch.order_tmp;
         s->scratch.junction = (uint32_t *)(void *)(s->scratch.path_m + nodes);
         s->scratch.main = (uint8_t *)(s->scratch.junction + nodes);
     }
-    bool ok = s->events && s->main_index && s->scratch.order && s->scratch.order_tmp;
+    bool ok = s->events && s->main_index && s->scratch.order;
     ok = ok && fg_arena_init(&s->arena, cfg->segment_capacity, cfg->max_voices);
     return ok ? FG_OK : FG_ERR_NO_MEMORY;
 }

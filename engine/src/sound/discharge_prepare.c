@@ -93,19 +93,19 @@ static void segment_event(const fg_discharge *d, const fg_prep_scratch *s, size_
         to_strike[j] = s->path_m[strike] + s->path_m[k] - 2.0 * s->path_m[s->junction[k]];
     }
     ev->emit_s = 0.5 * (to_strike[0] + to_strike[1]) / p->return_stroke_speed_m_s;
-    ev->gain = 1.0;
-    ev->segment = (uint32_t)i;
     ev->main = s->main[i];
+    ev->image = false;
 }
 
 /* The same segment seen in the ground: mirrored in z = 0, weaker by the
- * reflection coefficient, emitting at the same moment. */
-static void image_event(const fg_event *src, double reflection, fg_event *ev)
+ * reflection coefficient (path_to, discharge_event.c), emitting at the
+ * same moment. */
+static void image_event(const fg_event *src, fg_event *ev)
 {
     *ev = *src;
     fg_ground_mirror(src->mid, ev->mid);
     fg_ground_mirror(src->dir, ev->dir);
-    ev->gain = reflection;
+    ev->image = true;
 }
 
 fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void *desc,
@@ -161,7 +161,7 @@ fg_result fg_discharge_prepare(const fg_source_ops *ops, void *voice, const void
         if (pr->turbulence_s > 0)
             ev->emit_s += fg_turbulence_offset_s(&turbulence, ev->mid);
         if (pr->ground_reflection > 0)
-            image_event(ev, pr->ground_reflection, &v->events[m++]);
+            image_event(ev, &v->events[m++]);
     }
     v->event_count = m;
     const double c = cfg->speed_of_sound_m_s;

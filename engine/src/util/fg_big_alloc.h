@@ -1,5 +1,6 @@
 /* Zeroed storage for big arrays: the engine's events and prepare scratch
- * (segment_capacity of them), a scene file's text. The first write to each
+ * (segment_capacity of them), its bus set's planes, a scene file's text and
+ * its trees' nodes. The first write to each
  * page of fresh memory takes a page fault in the kernel; on a virtual
  * machine one costs ~10 us, so the events of 20 000 segments (4.6 MB)
  * cost more in faults than in their computing. Arrays of 256 KiB and more
