@@ -15,8 +15,10 @@
  *   across the seam at most 1.5 x the largest step inside).
  * - Re 6 667 (D = 1 cm, v0 = 10 m/s, nu = 1.5e-5): St against Fey's law
  *   for 5000 < Re < 2e5, St = 0.1935 + 1.1916 / sqrt(Re) = 0.2081, within
- *   15 %. docs/aero-textures.md gives the grid study behind the grids used
- *   here. */
+ *   15 %. This case fails: the 2-D flow sheds at St 0.27-0.29 (12 and
+ *   24 cells/D, long records, this box or ones with 15-16 D of wake),
+ *   above the 3-D experiments Fey fitted; docs/aero-textures.md ("Why
+ *   Re 6 700 fails") gives the box, grid and record study. */
 #include <complex.h>
 #include <math.h>
 #include <setjmp.h>
