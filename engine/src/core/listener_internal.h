@@ -27,7 +27,7 @@
 #include "fulgur/engine.h"
 #include "fg_ring.h"
 
-#define FG_POSE_WORDS 13
+#define FG_POSE_WORDS 16
 #define FG_POSE_QUEUE 64
 
 typedef struct fg_listener_cell {
@@ -43,8 +43,12 @@ typedef struct fg_pose_queue {
 
 void fg_listener_cell_init(fg_listener_cell *cell, const fg_listener *pose);
 /* Checks the pose: finite, forward and up non-zero and not parallel, the
- * time not negative. */
+ * angular speed within FG_MAX_ANGULAR_SPEED_RAD_S, the time not negative. */
 fg_result fg_listener_check(const fg_listener *pose);
+/* Is the pose at rest as given: its velocity and angular velocity all
+ * zero (which, where it moved or turned from the pose before, means "not
+ * known": core/trajectory_internal.h)? */
+bool fg_listener_at_rest(const fg_listener *pose);
 void fg_listener_cell_write(fg_listener_cell *cell, const fg_listener *pose);
 /* One attempt; returns false (leaving *pose and *serial alone) if a write
  * was in progress. [audio-thread] */
