@@ -831,6 +831,24 @@ static void stop_and_rest(fg_engine *e, fg_voice_id id, int b, void *arg)
     assert_int_equal(fg_aero_object_set_pose(e, id, &p), FG_OK);
 }
 
+/* The same body, its pose at rest published once where it stops, told
+ * at rest (velocity_given), and no more. */
+static void stop_once(fg_engine *e, fg_voice_id id, int b, void *arg)
+{
+    const stopping *s = arg;
+    if (b > s->move_blocks)
+        return;
+    fg_aero_pose p = s->start;
+    double t = b * 256 / FS;
+    for (int i = 0; i < 3; i++) {
+        p.position[i] += s->dir[i] * s->speed_m_s * t;
+        p.velocity[i] = b < s->move_blocks ? s->dir[i] * s->speed_m_s : 0.0;
+    }
+    p.time_s = t;
+    p.velocity_given = 1;
+    assert_int_equal(fg_aero_object_set_pose(e, id, &p), FG_OK);
+}
+
 /* A rod about z through (-0.5, 3, 0) swung about y at 20 rad/s, a pose
  * per block without its angular velocity, for *arg blocks; from then on
  * the pose at rest where it stopped. */
@@ -848,7 +866,8 @@ static void swing_and_rest(fg_engine *e, fg_voice_id id, int b, void *arg)
  * carry on along its last velocity. A 50 cm rod swept at 10 m/s across
  * the line to the listener (3 m) for 0.1 s in still air, then held: once
  * the last sound of the motion has arrived (a pose interval, r / c and a
- * block of interpolation later) there is nothing to hear; nor for the
+ * block of interpolation later) there is nothing to hear; nor when its
+ * pose at rest is published once, told at rest (velocity_given); nor for the
  * rod swung about its middle at 20 rad/s and held (its angular velocity
  * taken from the poses: the resting pose's first repeat stops the turn
  * as it stops a move). Then moved
@@ -884,6 +903,26 @@ static void coming_to_rest(void **state)
     assert_true(moving > 1e-6);
     if (after != 0.0)
         fail_msg("a body at rest still sounds %.4g Pa after it stopped", after);
+    free(ears[0]), free(ears[1]);
+
+    /* swept the same way and told once that it is at rest where it stops */
+    e = make_engine(2);
+    assert_int_equal(fg_aero_object_post(e, &o, &id), FG_OK);
+    render_ears(e, id, 120, stop_once, &s, ears);
+    fg_engine_destroy(e);
+    moving = 0, after = 0;
+    for (size_t i = 0; i < 120 * 256; i++) {
+        double x = fmax(fabs(ears[0][i]), fabs(ears[1][i]));
+        if (i / FS < rest_s)
+            moving = fmax(moving, x);
+        else if (i / FS >= quiet_s)
+            after = fmax(after, x);
+    }
+    print_message("swept at 10 m/s, told once it rests: peak %.4g Pa moving, %.4g Pa from %.1f ms "
+                  "after the stop\n", moving, after, 1e3 * (quiet_s - rest_s));
+    assert_true(moving > 1e-6);
+    if (after != 0.0)
+        fail_msg("a body told it is at rest still sounds %.4g Pa after it stopped", after);
     free(ears[0]), free(ears[1]);
 
     /* swung at 20 rad/s about its middle and held: no turn goes on */

@@ -55,7 +55,7 @@ void scene_aero_pose_at(const scene_aero *a, double t_s, fg_aero_pose *out)
     const scene_motion *m = &a->motion;
     fg_vec3 axis = fg_v3_load(m->axis), normal = fg_v3_load(m->normal);
     fg_vec3 k = fg_v3_load(m->turn_axis);
-    *out = (fg_aero_pose){.time_s = t_s};
+    *out = (fg_aero_pose){.time_s = t_s, .velocity_given = 1};
     memcpy(out->position, m->position_m, sizeof out->position);
     double angle = 0.0, rate = 0.0;
     if (m->kind == SCENE_MOTION_SWING) {

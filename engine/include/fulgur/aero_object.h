@@ -69,13 +69,17 @@ typedef struct fg_aero_pose {
     double axis[3];     /* any length in [1e-50, 1e50] */
     double normal[3];   /* the same, not parallel to axis */
     double velocity[3]; /* of the origin, m/s at time_s; all zero while the
-                         * origin moves from the previous pose: the chord */
+                         * origin moves from the previous pose (and not
+                         * velocity_given): the chord */
     double time_s;      /* engine clock (fg_engine_time_s); 0 = at the call */
     double angular_velocity[3]; /* rad/s at time_s about world axes through
                          * the origin, |w| <= FG_MAX_ANGULAR_SPEED_RAD_S;
                          * all zero while the axis or normal turns from the
-                         * previous pose: the rotation between the two over
-                         * the time between (fg_aero_object_set_pose) */
+                         * previous pose (and not velocity_given): the
+                         * rotation between the two over the time between
+                         * (fg_aero_object_set_pose) */
+    int velocity_given; /* non-zero: velocity and angular_velocity are the
+                         * body's, all zero meaning at rest (it stops here) */
 } fg_aero_pose;
 
 /* The air's motion around the object: a mean plus gusts, a seeded smooth
@@ -133,8 +137,9 @@ FG_API FG_NODISCARD fg_result fg_aero_object_post(fg_engine *engine, const fg_ae
  * extrapolation; a source at r from the origin moves at v + w x r, w the
  * path's angular velocity: the pose's where given, else the rotation
  * from the pose before over the time between, so a steady turn (a swing
- * sampled at 90 Hz) is followed exactly. A pose at rest
- * sent again stops a body that moved to it and otherwise changes nothing
+ * sampled at 90 Hz) is followed exactly. A pose at rest with
+ * velocity_given stops the body there; one without it (velocity not
+ * known) is stopped by its first repeat; further repeats change nothing
  * (docs/aero-objects.md, "A body at rest"). [any-thread] but not the
  * audio thread, one writer per object, from the post until the voice is
  * collected (the caller orders its last call before fg_engine_collect).

@@ -175,8 +175,9 @@ typedef struct fg_listener {
     double forward[3];   /* any length in [1e-50, 1e50] */
     double up[3];        /* the same, not parallel to forward */
     double velocity[3];  /* m/s at time_s. All zero while the position changes
-                          * from the previous pose means "not known": the
-                          * engine takes the chord from that pose */
+                          * from the previous pose means "not known" (unless
+                          * velocity_given): the engine takes the chord from
+                          * that pose */
     double time_s;       /* the engine clock at which the head is here
                           * (fg_engine_time_s); 0 = when the pose is
                           * published. A VR host gives its predicted display
@@ -184,9 +185,14 @@ typedef struct fg_listener {
     double angular_velocity[3]; /* rad/s at time_s, about world axes through
                           * the head, |w| <= FG_MAX_ANGULAR_SPEED_RAD_S. All
                           * zero while forward or up changes from the
-                          * previous pose means "not known": the engine
-                          * takes the rotation between the two orientations
-                          * over the time between (exact for a steady turn) */
+                          * previous pose means "not known" (unless
+                          * velocity_given): the engine takes the rotation
+                          * between the two orientations over the time
+                          * between (exact for a steady turn) */
+    int velocity_given;  /* non-zero: velocity and angular_velocity are the
+                          * head's, all zero meaning at rest: a pose reached
+                          * by moving stops the head there, and nothing is
+                          * taken from the pose before */
 } fg_listener;
 
 /* The fastest turn a pose may give, rad/s (95 000 rpm). */
@@ -337,7 +343,8 @@ FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *
  * arrives between two known poses. A host publishing "now" poses is
  * extrapolated along its velocity between frames; a pose at rest
  * republished unchanged costs nothing, but for its first repeat after a
- * move, which stops the head where it rests.
+ * move, which stops the head where it rests (a pose at rest with
+ * velocity_given stops it at once).
  * [any-thread] but not the audio thread: meant for one writer (the frame
  * thread). Overlapping calls from several threads stay correct, but each
  * waits while another is writing, so it is not lock-free among writers.

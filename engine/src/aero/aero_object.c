@@ -54,6 +54,7 @@ void fg_aero_pose_record(const fg_aero_pose *p, fg_listener *out)
     memcpy(out->position, p->position, sizeof out->position);
     memcpy(out->velocity, p->velocity, sizeof out->velocity);
     memcpy(out->angular_velocity, p->angular_velocity, sizeof out->angular_velocity);
+    out->velocity_given = p->velocity_given;
     fg_v3_store(x, out->forward);
     fg_v3_store(fg_v3_cross(a, x), out->up); /* forward x up = the axis */
 }

@@ -13,6 +13,7 @@ static void pack(const fg_listener *p, uint64_t w[FG_POSE_WORDS])
     for (int i = 0; i < 5; i++)
         memcpy(&w[3 * i], v[i], 3 * sizeof(double));
     memcpy(&w[15], &p->time_s, sizeof(double));
+    w[16] = p->velocity_given != 0;
 }
 
 static void unpack(const uint64_t w[FG_POSE_WORDS], fg_listener *p)
@@ -21,6 +22,7 @@ static void unpack(const uint64_t w[FG_POSE_WORDS], fg_listener *p)
     for (int i = 0; i < 5; i++)
         memcpy(v[i], &w[3 * i], 3 * sizeof(double));
     memcpy(&p->time_s, &w[15], sizeof(double));
+    p->velocity_given = (int)w[16];
 }
 
 void fg_listener_cell_init(fg_listener_cell *cell, const fg_listener *pose)
@@ -38,7 +40,7 @@ fg_result fg_listener_check(const fg_listener *p)
         return FG_ERR_NULL;
     uint64_t w[FG_POSE_WORDS];
     pack(p, w);
-    for (int i = 0; i < FG_POSE_WORDS; i++) {
+    for (int i = 0; i < FG_POSE_DOUBLES; i++) {
         double d;
         memcpy(&d, &w[i], sizeof d);
         if (!isfinite(d))
@@ -143,15 +145,17 @@ static void written(const fg_pose_queue *q, uint64_t n, fg_listener *pose)
 }
 
 /* Does the trajectory (core/trajectory_internal.h) hold pose n, last, at
- * rest? It joins last to the newest pose published before it with an
- * earlier time (those at its time or later it replaced), and gives last
- * the chord's velocity and the turn's angular velocity from there when
- * that pose is elsewhere, carrying the body on along them past last. At
- * rest: last is alone (the first pose, or it replaced every one before
- * it), or that pose rests in the same place. Not known (beyond the
- * queue's memory): false. */
+ * rest? At rest as given (velocity_given): yes. Else it joins last to
+ * the newest pose published before it with an earlier time (those at its
+ * time or later it replaced), and gives last the chord's velocity and the
+ * turn's angular velocity from there when that pose is elsewhere,
+ * carrying the body on along them past last. At rest: last is alone (the
+ * first pose, or it replaced every one before it), or that pose rests in
+ * the same place. Not known (beyond the queue's memory): false. */
 static bool known_to_rest(const fg_pose_queue *q, uint64_t n, const fg_listener *last)
 {
+    if (last->velocity_given)
+        return true;
     for (uint64_t k = n - 1; k >= 1 && n - k < FG_POSE_QUEUE; k--) {
         fg_listener p;
         written(q, k, &p);

@@ -63,7 +63,7 @@ void fg_trajectory_push(fg_trajectory *t, const fg_listener *pose, uint64_t numb
     } else {
         double h = p->time_s - prev->time_s;
         /* moved without a velocity: the chord from the pose before */
-        if (zero3(pose->velocity) && !same_place(p, prev))
+        if (!pose->velocity_given && zero3(pose->velocity) && !same_place(p, prev))
             for (int k = 0; k < 3; k++)
                 p->velocity[k] = (p->position[k] - prev->position[k]) / h;
         fg_vec3 fa[3], fb[3];
@@ -71,7 +71,8 @@ void fg_trajectory_push(fg_trajectory *t, const fg_listener *pose, uint64_t numb
         frame_of(p, fb);
         fg_vec3 turn = fg_rot_between(fa, fb);
         /* turned without an angular velocity: the turn over the time */
-        if (zero3(pose->angular_velocity) && !same_orientation(p, prev))
+        if (!pose->velocity_given && zero3(pose->angular_velocity) &&
+            !same_orientation(p, prev))
             fg_v3_store(fg_v3_div(turn, h), p->angular_velocity);
         fg_v3_store(turn, e.turn);
         fg_v3_store(fg_rot_jacobian_inverse(turn, fg_v3_load(p->angular_velocity)), e.turn_end);

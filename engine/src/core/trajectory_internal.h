@@ -22,7 +22,9 @@
  * between. A pose published without an angular velocity (all zero) while
  * it turned takes the rotation from the pose before over the time
  * between: for a steady turn both ends' rates are the turn's, phi is
- * linear and the path is the turn exactly, at its exact rate. After the
+ * linear and the path is the turn exactly, at its exact rate. A pose
+ * with velocity_given keeps its velocities as given (zeros: at rest, so
+ * the body stops at it). After the
  * newest pose the head continues along its velocity and turns at its
  * angular velocity for at most FG_EXTRAPOLATE_MAX_S, then holds; before
  * the oldest it holds the oldest.
