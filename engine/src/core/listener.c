@@ -128,7 +128,8 @@ bool fg_listener_at_rest(const fg_listener *p)
 /* Are p and q both at rest, in the same place (bit for bit)? */
 static bool rests_where(const fg_listener *p, const fg_listener *q)
 {
-    return fg_listener_at_rest(p) && fg_listener_at_rest(q) && memcmp(p->position, q->position, sizeof p->position) == 0 &&
+    return fg_listener_at_rest(p) && fg_listener_at_rest(q) &&
+           memcmp(p->position, q->position, sizeof p->position) == 0 &&
            memcmp(p->forward, q->forward, sizeof p->forward) == 0 &&
            memcmp(p->up, q->up, sizeof p->up) == 0;
 }
