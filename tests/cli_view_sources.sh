@@ -8,7 +8,8 @@
 # give the same samples (the frame thread waits for the sim thread to
 # have fed the fires and published their poses before the audio renders a
 # frame); the sword swing (examples/aero/sword_swing.json) within 1 dB of
-# render's. And the viewer's layouts: --layout ambisonics:2 writes 9
+# render's, its blade drawn left of the middle as it passes in front
+# (0.25 s) and right of it where the swing ends (0.98 s). And the viewer's layouts: --layout ambisonics:2 writes 9
 # channels within 1 dB of render's RMS in that layout (the campfire),
 # binaural 2; ambisonics in a window, on a live device, is refused
 # naming the layout, exit 2.
@@ -55,11 +56,22 @@ awk -v a="$(/usr/bin/python3 "$check" region "$tmp/torch1/frame_0000.png" 0 0 40
     'BEGIN {printf "torch: the frame'"'"'s left quarter %.4f at 0 s, %.4f at 2 s\n", a, b
             exit !(a > 2 * b + 0.005)}' || { echo "torch: the flame does not move with the fire"; fail=1; }
 
+mkdir "$tmp/sword"
 "$fulgur" view "$dir/aero/sword_swing.json" --gl egl --size 160x90 --fps 60 --frames 60 \
-    --audio "wav:$tmp/sword.wav" >/dev/null || { echo "sword_swing: view failed"; fail=1; }
+    --png-dir "$tmp/sword" --audio "wav:$tmp/sword.wav" >/dev/null ||
+    { echo "sword_swing: view failed"; fail=1; }
 "$fulgur" render "$dir/aero/sword_swing.json" -o "$tmp/sword_render.wav" --quiet
 within sword_swing 1 "$(rms_of "$tmp/sword_render.wav")" "$(rms_of "$tmp/sword.wav")" ||
     { echo "sword_swing: view and render disagree"; fail=1; }
+halves() { # the left and the right half's mean of a 160 x 90 frame
+    echo "$(/usr/bin/python3 "$check" region "$1" 0 0 80 90)" \
+        "$(/usr/bin/python3 "$check" region "$1" 80 0 160 90)"
+}
+echo "$(halves "$tmp/sword/frame_0015.png") $(halves "$tmp/sword/frame_0059.png")" |
+    awk '{printf "sword_swing: the blade at 0.25 s left %.4f, right %.4f; at 0.98 s left %.4f, " \
+                 "right %.4f\n", $1, $2, $3, $4
+          exit !($1 > $2 + 0.01 && $4 > $3 + 0.01)}' ||
+    { echo "sword_swing: the blade is not drawn where the swing has it"; fail=1; }
 for layout in ambisonics:2 binaural; do
     "$fulgur" view "$dir/fire/campfire.json" --gl egl --size 160x90 --fps 30 --frames 30 \
         --layout "$layout" --audio "wav:$tmp/l.wav" >/dev/null || { echo "$layout: view failed"; fail=1; }

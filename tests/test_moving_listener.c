@@ -325,7 +325,8 @@ static fg_listener at_rest_at(double x, double t)
  * trajectory holds the body at rest: not the first repeat of a pose
  * reached by moving (it would run on along the chord's velocity), nor a
  * repeat at the same time (it replaces the newest, which keeps its
- * chord); yes after a pose that replaced all the others. */
+ * chord); yes after a pose that replaced all the others, and after a
+ * pose told at rest (velocity_given), reached by moving or not. */
 static void pose_queue_repeats_at_rest(void **state)
 {
     (void)state;
@@ -355,6 +356,14 @@ static void pose_queue_repeats_at_rest(void **state)
     moving.velocity[0] = 1.0;
     assert_true(fg_pose_queue_push(&q, &moving));
     assert_true(fg_pose_queue_push(&q, &moving)); /* moving poses are all published */
+    p = at_rest_at(4, 0.10);
+    p.velocity_given = 1;
+    assert_true(fg_pose_queue_push(&q, &p)); /* moved, and told at rest: it stops here */
+    p.time_s = 0.11;
+    assert_false(fg_pose_queue_push(&q, &p));
+    p.velocity_given = 0;
+    p.time_s = 0.12;
+    assert_false(fg_pose_queue_push(&q, &p)); /* the same, velocity not known */
 }
 
 int main(void)

@@ -1,6 +1,6 @@
 /* The frame thread: a VR application's 90 Hz loop, reduced to the head.
  * Each tick it publishes where the head will be one tick later, with its
- * velocity and that time on the engine clock, as a VR runtime predicts the
+ * velocity, angular velocity and that time on the engine clock, as a VR runtime predicts the
  * head for the frame's display time: the scene's pose path, or for a scene
  * with one fixed pose a small sway (a few centimetres and degrees, seeded,
  * a smooth function of time so lock-step runs repeat exactly). The engine
@@ -53,6 +53,7 @@ static void sway_apply(const sway *w, double t, fg_listener *pose)
     for (int k = 0; k < 3; k++)
         out[k] = pose->forward[k] * c + cross[k] * s + along[k] * (1 - c);
     memcpy(pose->forward, out, sizeof out);
+    fg_v3_store(fg_v3_scale(fg_v3_unit(u), RUN_SWAY_YAW_RAD * da[2]), pose->angular_velocity);
 }
 
 static void set_pose(run_ctx *run, const sway *w, double t)

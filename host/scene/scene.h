@@ -248,7 +248,8 @@ void scene_deinit(scene *s);
  * is the path's slope (0 when held). */
 void scene_listener_at(const scene *s, double t_s, fg_listener *out);
 
-/* Aero object a's pose at t (time_s = t). */
+/* Aero object a's pose at t (time_s = t), with its exact velocity and
+ * angular velocity (velocity_given: zeros are at rest). */
 void scene_aero_pose_at(const scene_aero *a, double t_s, fg_aero_pose *out);
 
 /* Posts every aero object now (each sounds from its own emit time), the

@@ -43,19 +43,28 @@ static double swing_angle(const scene_motion *m, double t_s)
     return m->peak_rad_s * (0.5 * u - T / (4.0 * FG_PI) * sin(2.0 * FG_PI * u / T));
 }
 
+/* Its rate, rad/s: the speed peak * sin^2(pi u / T) during the swing. */
+static double swing_rate(const scene_motion *m, double t_s)
+{
+    double u = t_s - m->start_s, s = sin(FG_PI * u / m->duration_s);
+    return u > 0.0 && u < m->duration_s ? m->peak_rad_s * s * s : 0.0;
+}
+
 void scene_aero_pose_at(const scene_aero *a, double t_s, fg_aero_pose *out)
 {
     const scene_motion *m = &a->motion;
     fg_vec3 axis = fg_v3_load(m->axis), normal = fg_v3_load(m->normal);
     fg_vec3 k = fg_v3_load(m->turn_axis);
-    *out = (fg_aero_pose){.time_s = t_s};
+    *out = (fg_aero_pose){.time_s = t_s, .velocity_given = 1};
     memcpy(out->position, m->position_m, sizeof out->position);
-    double angle = 0.0;
+    double angle = 0.0, rate = 0.0;
     if (m->kind == SCENE_MOTION_SWING) {
         angle = swing_angle(m, t_s);
+        rate = swing_rate(m, t_s);
     } else if (m->kind == SCENE_MOTION_THROW) {
         double u = fmax(t_s - m->start_s, 0.0);
         angle = m->spin_rad_s * u;
+        rate = t_s > m->start_s ? m->spin_rad_s : 0.0;
         for (int c = 0; c < 3; c++) {
             double g = c == 2 ? -m->gravity_m_s2 : 0.0;
             out->position[c] = m->position_m[c] + m->velocity_m_s[c] * u + 0.5 * g * u * u;
@@ -64,6 +73,7 @@ void scene_aero_pose_at(const scene_aero *a, double t_s, fg_aero_pose *out)
     }
     fg_v3_store(rotate(axis, k, angle), out->axis);
     fg_v3_store(rotate(normal, k, angle), out->normal);
+    fg_v3_store(fg_v3_scale(k, rate), out->angular_velocity);
 }
 
 fg_result scene_aero_post_all(const scene *s, fg_engine *e, fg_voice_id *ids, char *err,

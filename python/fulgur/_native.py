@@ -105,6 +105,7 @@ typedef struct fg_discharge {
 typedef uint64_t fg_voice_id;
 typedef struct fg_listener {
     double position[3]; double forward[3]; double up[3]; double velocity[3]; double time_s;
+    double angular_velocity[3]; int velocity_given;
 } fg_listener;
 typedef struct fg_engine_report {
     uint64_t posted; uint64_t dropped_posts; uint64_t adopted; uint64_t finished;
@@ -157,6 +158,7 @@ const fg_aero_texture_desc *fg_aero_texture_get(const fg_aero_texture *t);
 typedef enum fg_aero_body { FG_AERO_STICK = 0, FG_AERO_COMPACT = 1 } fg_aero_body;
 typedef struct fg_aero_pose {
     double position[3]; double axis[3]; double normal[3]; double velocity[3]; double time_s;
+    double angular_velocity[3]; int velocity_given;
 } fg_aero_pose;
 typedef struct fg_aero_wind {
     double velocity[3]; double gust; double gust_period_s; uint64_t seed;

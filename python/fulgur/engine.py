@@ -225,11 +225,15 @@ class Engine:
         return voice[0]
 
     def set_aero_pose(self, voice, position, axis, normal, velocity=(0.0, 0.0, 0.0),
-                      time_s=0.0):
+                      time_s=0.0, angular_velocity=(0.0, 0.0, 0.0), velocity_given=False):
         """Publishes where aero object voice is at time_s on the engine
-        clock (0: now): fg_aero_object_set_pose. One thread per object."""
+        clock (0: now), its velocity (m/s) and angular velocity (rad/s;
+        all zero: from the poses, unless velocity_given, when zeros are
+        at rest): fg_aero_object_set_pose. One thread per object."""
         pose = ffi.new("fg_aero_pose *")
         _aero_pose(pose, position, axis, normal, velocity, time_s)
+        _set3(pose.angular_velocity, angular_velocity, "angular_velocity")
+        pose.velocity_given = 1 if velocity_given else 0
         handle = self._enter(None, "set_aero_pose")
         try:
             code = lib.fg_aero_object_set_pose(handle, _voice(voice, "set_aero_pose"), pose)
@@ -383,16 +387,20 @@ class Engine:
     # -- any thread --
 
     def set_listener(self, position, forward=(0.0, 1.0, 0.0), up=(0.0, 0.0, 1.0),
-                     velocity=(0.0, 0.0, 0.0)):
+                     velocity=(0.0, 0.0, 0.0), angular_velocity=(0.0, 0.0, 0.0),
+                     velocity_given=False):
         """Publishes the listener's pose: position (metres), forward and up
-        (any length, not parallel), velocity (m/s, informational)."""
+        (any length, not parallel), velocity (m/s) and angular velocity
+        (rad/s; all zero: from the poses, unless velocity_given, when
+        zeros are at rest)."""
         pose = ffi.new("fg_listener *")
         for name, value in (("position", position), ("forward", forward), ("up", up),
-                            ("velocity", velocity)):
+                            ("velocity", velocity), ("angular_velocity", angular_velocity)):
             v = _convert.vector(value, 3, name)
             target = getattr(pose, name)
             for i in range(3):
                 target[i] = float(v[i])
+        pose.velocity_given = 1 if velocity_given else 0
         handle = self._enter(None, "set_listener")
         try:
             code = lib.fg_engine_set_listener(handle, pose)
@@ -409,7 +417,8 @@ class Engine:
             lib.fg_engine_get_listener(handle, pose)
         finally:
             self._leave(None)
-        return {k: list(getattr(pose, k)) for k in ("position", "forward", "up", "velocity")}
+        return {k: list(getattr(pose, k))
+                for k in ("position", "forward", "up", "velocity", "angular_velocity")}
 
     def stats(self):
         """The engine's counters (fg_engine_report) as a dict: posted,

@@ -78,10 +78,13 @@ def test_listener_and_config():
     with fulgur.Engine({"channels": 2}, max_voices=4) as e:
         assert e.config["max_voices"] == 4 and e.config["sample_rate_hz"] == 48000
         assert e.channels == 2 and e.sample_rate_hz == 48000
-        e.set_listener([1, 2, 3], forward=[0, 2, 0], velocity=[1, 0, 0])
+        e.set_listener([1, 2, 3], forward=[0, 2, 0], velocity=[1, 0, 0],
+                       angular_velocity=[0, 0, 0.5])
         pose = e.listener
         assert pose["position"] == [1, 2, 3] and pose["forward"] == [0, 2, 0]
-        assert pose["velocity"] == [1, 0, 0]
+        assert pose["velocity"] == [1, 0, 0] and pose["angular_velocity"] == [0, 0, 0.5]
+        with pytest.raises(fulgur.FulgurError):
+            e.set_listener([1, 2, 3], angular_velocity=[2e4, 0, 0])  # above 1e4 rad/s
 
 
 def test_continuous_voice_stops():

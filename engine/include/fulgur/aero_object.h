@@ -69,10 +69,17 @@ typedef struct fg_aero_pose {
     double axis[3];     /* any length in [1e-50, 1e50] */
     double normal[3];   /* the same, not parallel to axis */
     double velocity[3]; /* of the origin, m/s at time_s; all zero while the
-                         * origin moves from the previous pose: the chord.
-                         * The turn comes from the axis' change between
-                         * poses (see fg_aero_object_set_pose) */
+                         * origin moves from the previous pose (and not
+                         * velocity_given): the chord */
     double time_s;      /* engine clock (fg_engine_time_s); 0 = at the call */
+    double angular_velocity[3]; /* rad/s at time_s about world axes through
+                         * the origin, |w| <= FG_MAX_ANGULAR_SPEED_RAD_S;
+                         * all zero while the axis or normal turns from the
+                         * previous pose (and not velocity_given): the
+                         * rotation between the two over the time between
+                         * (fg_aero_object_set_pose) */
+    int velocity_given; /* non-zero: velocity and angular_velocity are the
+                         * body's, all zero meaning at rest (it stops here) */
 } fg_aero_pose;
 
 /* The air's motion around the object: a mean plus gusts, a seeded smooth
@@ -125,21 +132,23 @@ FG_API FG_NODISCARD fg_result fg_aero_object_post(fg_engine *engine, const fg_ae
 /* Publishes where object id is at pose->time_s (0: now); the pose is
  * copied. The audio thread joins the poses into a path exactly as the
  * listener's (fg_engine_set_listener): the origin on the cubic through
- * the positions and velocities, the axis and normal blended, at most 0.1 s
- * of extrapolation; a source's velocity is the origin's plus its distance
- * along the axis times the axis' rate of turn between the two poses (the
- * chord: for a steady turn of angle a per pose, 1 - a^2 / 24 of the exact
- * w x r and up to a / 2 off its direction, so a stick's cross-flow is
- * 0.21 % to 0.82 % low for a 20 rad/s swing at 90 Hz). A pose at rest
- * sent again stops a body that moved to it and otherwise changes nothing
+ * the positions and velocities, the axis and normal turned on the cubic
+ * through the orientations and angular velocities, at most 0.1 s of
+ * extrapolation; a source at r from the origin moves at v + w x r, w the
+ * path's angular velocity: the pose's where given, else the rotation
+ * from the pose before over the time between, so a steady turn (a swing
+ * sampled at 90 Hz) is followed exactly. A pose at rest with
+ * velocity_given stops the body there; one without it (velocity not
+ * known) is stopped by its first repeat; further repeats change nothing
  * (docs/aero-objects.md, "A body at rest"). [any-thread] but not the
  * audio thread, one writer per object, from the post until the voice is
  * collected (the caller orders its last call before fg_engine_collect).
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FOUND id is not a live aero object;
  * FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT a position beyond
  * +-FG_TREE_MAX_COORDINATE_M, an axis or normal whose length is outside
- * [1e-50, 1e50], the two parallel, a speed above FG_AERO_MAX_SPEED_M_S, a
- * negative time. Nothing is published on an error. */
+ * [1e-50, 1e50], the two parallel, a speed above FG_AERO_MAX_SPEED_M_S, an
+ * angular speed above FG_MAX_ANGULAR_SPEED_RAD_S, a negative time. Nothing
+ * is published on an error. */
 FG_API FG_NODISCARD fg_result fg_aero_object_set_pose(fg_engine *engine, fg_voice_id id,
                                                       const fg_aero_pose *pose);
 

@@ -175,13 +175,28 @@ typedef struct fg_listener {
     double forward[3];   /* any length in [1e-50, 1e50] */
     double up[3];        /* the same, not parallel to forward */
     double velocity[3];  /* m/s at time_s. All zero while the position changes
-                          * from the previous pose means "not known": the
-                          * engine takes the chord from that pose */
+                          * from the previous pose means "not known" (unless
+                          * velocity_given): the engine takes the chord from
+                          * that pose */
     double time_s;       /* the engine clock at which the head is here
                           * (fg_engine_time_s); 0 = when the pose is
                           * published. A VR host gives its predicted display
                           * time, or the time of the frame's tracking sample */
+    double angular_velocity[3]; /* rad/s at time_s, about world axes through
+                          * the head, |w| <= FG_MAX_ANGULAR_SPEED_RAD_S. All
+                          * zero while forward or up changes from the
+                          * previous pose means "not known" (unless
+                          * velocity_given): the engine takes the rotation
+                          * between the two orientations over the time
+                          * between (exact for a steady turn) */
+    int velocity_given;  /* non-zero: velocity and angular_velocity are the
+                          * head's, all zero meaning at rest: a pose reached
+                          * by moving stops the head there, and nothing is
+                          * taken from the pose before */
 } fg_listener;
+
+/* The fastest turn a pose may give, rad/s (95 000 rpm). */
+#define FG_MAX_ANGULAR_SPEED_RAD_S 1e4
 
 typedef struct fg_engine_report {
     uint64_t posted;            /* voices accepted by fg_engine_post */
@@ -314,9 +329,12 @@ FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *
  * every pose published since its last block (the newest 64 if more came)
  * into the listener's path: between two poses the position follows the
  * cubic through both positions with both velocities (a pose without one
- * takes the chord from the pose before), the directions blend; after the
- * newest pose the head goes on along its velocity for at most 0.1 s, then
- * stays. A pose whose time is not after the previous one's replaces the
+ * takes the chord from the pose before), the orientation turns by the
+ * cubic through both orientations with both angular velocities (a pose
+ * without one takes the rotation from the pose before over the time
+ * between: a steady turn is followed exactly); after the newest pose the
+ * head goes on along its velocity, turning at its angular velocity, for
+ * at most 0.1 s, then stays. A pose whose time is not after the previous one's replaces the
  * path from its time on: the latest value wins. The engine keeps the last
  * 128 poses, and those of the last second.
  * For the path of a 90 Hz host to sound continuous, publish each frame's
@@ -325,7 +343,8 @@ FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *
  * arrives between two known poses. A host publishing "now" poses is
  * extrapolated along its velocity between frames; a pose at rest
  * republished unchanged costs nothing, but for its first repeat after a
- * move, which stops the head where it rests.
+ * move, which stops the head where it rests (a pose at rest with
+ * velocity_given stops it at once).
  * [any-thread] but not the audio thread: meant for one writer (the frame
  * thread). Overlapping calls from several threads stay correct, but each
  * waits while another is writing, so it is not lock-free among writers.
@@ -333,7 +352,8 @@ FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *
  * next block.
  * Errors: FG_ERR_NULL; FG_ERR_NOT_FINITE; FG_ERR_ARGUMENT a position beyond
  * +-FG_TREE_MAX_COORDINATE_M, a forward or up whose length is outside
- * [1e-50, 1e50], the two parallel, or a negative time. */
+ * [1e-50, 1e50], the two parallel, an angular speed above
+ * FG_MAX_ANGULAR_SPEED_RAD_S, or a negative time. */
 FG_API FG_NODISCARD fg_result fg_engine_set_listener(fg_engine *engine, const fg_listener *pose);
 
 /* Copies the latest published pose into *out (time_s as stamped); waits

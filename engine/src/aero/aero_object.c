@@ -33,7 +33,7 @@ static bool finite3(const double v[3])
 static fg_result check_pose(const fg_aero_pose *p)
 {
     if (!finite3(p->position) || !finite3(p->axis) || !finite3(p->normal) ||
-        !finite3(p->velocity) || !isfinite(p->time_s))
+        !finite3(p->velocity) || !finite3(p->angular_velocity) || !isfinite(p->time_s))
         return FG_ERR_NOT_FINITE;
     if (fg_v3_len(fg_v3_load(p->velocity)) > FG_AERO_MAX_SPEED_M_S)
         return FG_ERR_ARGUMENT;
@@ -42,6 +42,7 @@ static fg_result check_pose(const fg_aero_pose *p)
     memcpy(raw.forward, p->normal, sizeof raw.forward);
     memcpy(raw.up, p->axis, sizeof raw.up);
     memcpy(raw.velocity, p->velocity, sizeof raw.velocity);
+    memcpy(raw.angular_velocity, p->angular_velocity, sizeof raw.angular_velocity);
     return fg_listener_check(&raw);
 }
 
@@ -52,6 +53,8 @@ void fg_aero_pose_record(const fg_aero_pose *p, fg_listener *out)
     *out = (fg_listener){.time_s = p->time_s};
     memcpy(out->position, p->position, sizeof out->position);
     memcpy(out->velocity, p->velocity, sizeof out->velocity);
+    memcpy(out->angular_velocity, p->angular_velocity, sizeof out->angular_velocity);
+    out->velocity_given = p->velocity_given;
     fg_v3_store(x, out->forward);
     fg_v3_store(fg_v3_cross(a, x), out->up); /* forward x up = the axis */
 }

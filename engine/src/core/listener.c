@@ -9,18 +9,20 @@
 
 static void pack(const fg_listener *p, uint64_t w[FG_POSE_WORDS])
 {
-    const double *v[4] = {p->position, p->forward, p->up, p->velocity};
-    for (int i = 0; i < 4; i++)
+    const double *v[5] = {p->position, p->forward, p->up, p->velocity, p->angular_velocity};
+    for (int i = 0; i < 5; i++)
         memcpy(&w[3 * i], v[i], 3 * sizeof(double));
-    memcpy(&w[12], &p->time_s, sizeof(double));
+    memcpy(&w[15], &p->time_s, sizeof(double));
+    w[16] = p->velocity_given != 0;
 }
 
 static void unpack(const uint64_t w[FG_POSE_WORDS], fg_listener *p)
 {
-    double *v[4] = {p->position, p->forward, p->up, p->velocity};
-    for (int i = 0; i < 4; i++)
+    double *v[5] = {p->position, p->forward, p->up, p->velocity, p->angular_velocity};
+    for (int i = 0; i < 5; i++)
         memcpy(v[i], &w[3 * i], 3 * sizeof(double));
-    memcpy(&p->time_s, &w[12], sizeof(double));
+    memcpy(&p->time_s, &w[15], sizeof(double));
+    p->velocity_given = (int)w[16];
 }
 
 void fg_listener_cell_init(fg_listener_cell *cell, const fg_listener *pose)
@@ -38,13 +40,14 @@ fg_result fg_listener_check(const fg_listener *p)
         return FG_ERR_NULL;
     uint64_t w[FG_POSE_WORDS];
     pack(p, w);
-    for (int i = 0; i < FG_POSE_WORDS; i++) {
+    for (int i = 0; i < FG_POSE_DOUBLES; i++) {
         double d;
         memcpy(&d, &w[i], sizeof d);
         if (!isfinite(d))
             return FG_ERR_NOT_FINITE;
     }
-    if (p->time_s < 0)
+    if (p->time_s < 0 ||
+        fg_v3_len(fg_v3_load(p->angular_velocity)) > FG_MAX_ANGULAR_SPEED_RAD_S)
         return FG_ERR_ARGUMENT;
     for (int k = 0; k < 3; k++)
         if (fabs(p->position[k]) > FG_TREE_MAX_COORDINATE_M)
@@ -114,15 +117,19 @@ void fg_pose_queue_init(fg_pose_queue *q, const fg_listener *pose)
     atomic_init(&q->writing, 0);
 }
 
-static bool at_rest(const fg_listener *p)
+bool fg_listener_at_rest(const fg_listener *p)
 {
-    return p->velocity[0] == 0.0 && p->velocity[1] == 0.0 && p->velocity[2] == 0.0;
+    for (int k = 0; k < 3; k++)
+        if (p->velocity[k] != 0.0 || p->angular_velocity[k] != 0.0)
+            return false;
+    return true;
 }
 
 /* Are p and q both at rest, in the same place (bit for bit)? */
 static bool rests_where(const fg_listener *p, const fg_listener *q)
 {
-    return at_rest(p) && at_rest(q) && memcmp(p->position, q->position, sizeof p->position) == 0 &&
+    return fg_listener_at_rest(p) && fg_listener_at_rest(q) &&
+           memcmp(p->position, q->position, sizeof p->position) == 0 &&
            memcmp(p->forward, q->forward, sizeof p->forward) == 0 &&
            memcmp(p->up, q->up, sizeof p->up) == 0;
 }
@@ -139,14 +146,17 @@ static void written(const fg_pose_queue *q, uint64_t n, fg_listener *pose)
 }
 
 /* Does the trajectory (core/trajectory_internal.h) hold pose n, last, at
- * rest? It joins last to the newest pose published before it with an
- * earlier time (those at its time or later it replaced), and gives last
- * the chord's velocity from there when that pose is elsewhere, carrying
- * the body on along it past last. At rest: last is alone (the first
- * pose, or it replaced every one before it), or that pose rests in the
- * same place. Not known (beyond the queue's memory): false. */
+ * rest? At rest as given (velocity_given): yes. Else it joins last to
+ * the newest pose published before it with an earlier time (those at its
+ * time or later it replaced), and gives last the chord's velocity and the
+ * turn's angular velocity from there when that pose is elsewhere,
+ * carrying the body on along them past last. At rest: last is alone (the
+ * first pose, or it replaced every one before it), or that pose rests in
+ * the same place. Not known (beyond the queue's memory): false. */
 static bool known_to_rest(const fg_pose_queue *q, uint64_t n, const fg_listener *last)
 {
+    if (last->velocity_given)
+        return true;
     for (uint64_t k = n - 1; k >= 1 && n - k < FG_POSE_QUEUE; k--) {
         fg_listener p;
         written(q, k, &p);

@@ -27,7 +27,8 @@
 #include "fulgur/engine.h"
 #include "fg_ring.h"
 
-#define FG_POSE_WORDS 13
+#define FG_POSE_DOUBLES 16 /* then the velocity_given word */
+#define FG_POSE_WORDS 17
 #define FG_POSE_QUEUE 64
 
 typedef struct fg_listener_cell {
@@ -43,8 +44,12 @@ typedef struct fg_pose_queue {
 
 void fg_listener_cell_init(fg_listener_cell *cell, const fg_listener *pose);
 /* Checks the pose: finite, forward and up non-zero and not parallel, the
- * time not negative. */
+ * angular speed within FG_MAX_ANGULAR_SPEED_RAD_S, the time not negative. */
 fg_result fg_listener_check(const fg_listener *pose);
+/* Is the pose at rest as given: its velocity and angular velocity all
+ * zero (which, where it moved or turned from the pose before, means "not
+ * known": core/trajectory_internal.h)? */
+bool fg_listener_at_rest(const fg_listener *pose);
 void fg_listener_cell_write(fg_listener_cell *cell, const fg_listener *pose);
 /* One attempt; returns false (leaving *pose and *serial alone) if a write
  * was in progress. [audio-thread] */
@@ -56,8 +61,9 @@ void fg_listener_cell_read(const fg_listener_cell *cell, fg_listener *pose, unsi
 void fg_pose_queue_init(fg_pose_queue *q, const fg_listener *pose);
 /* Publishes a pose; a pose at rest where the newest one rests is not
  * published again (returns false) once the trajectory holds the body at
- * rest there: the newest is alone (the first pose, or it replaced those
- * before it), or the pose before it in time rests in the same place.
+ * rest there: the newest is at rest as given (velocity_given), or alone
+ * (the first pose, or it replaced those before it), or the pose before it
+ * in time rests in the same place.
  * Nothing the listener hears changes by it. The first repeat of a pose at
  * rest reached by moving is published: the trajectory would otherwise
  * carry the body on along the chord's velocity. [any-thread but audio] */

@@ -2,74 +2,100 @@
 #include <math.h>
 #include <string.h>
 
+#include "fg_rotation.h"
 #include "fg_vec3.h"
+#include "listener_internal.h"
 #include "trajectory_internal.h"
 
-static fg_listener *at(fg_trajectory *t, unsigned i)
+static fg_trajectory_pose *at(fg_trajectory *t, unsigned i)
 {
     return &t->pose[(t->first + i) % FG_TRAJECTORY_POSES];
 }
 
-static const fg_listener *cat(const fg_trajectory *t, unsigned i)
+static const fg_trajectory_pose *cat(const fg_trajectory *t, unsigned i)
 {
     return &t->pose[(t->first + i) % FG_TRAJECTORY_POSES];
-}
-
-static bool at_rest(const fg_listener *p)
-{
-    return p->velocity[0] == 0.0 && p->velocity[1] == 0.0 && p->velocity[2] == 0.0;
 }
 
 static bool same_place(const fg_listener *a, const fg_listener *b)
 {
-    return memcmp(a->position, b->position, sizeof a->position) == 0 &&
-           memcmp(a->forward, b->forward, sizeof a->forward) == 0 &&
+    return memcmp(a->position, b->position, sizeof a->position) == 0;
+}
+
+static bool same_orientation(const fg_listener *a, const fg_listener *b)
+{
+    return memcmp(a->forward, b->forward, sizeof a->forward) == 0 &&
            memcmp(a->up, b->up, sizeof a->up) == 0;
+}
+
+static bool zero3(const double v[3])
+{
+    return v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0;
+}
+
+/* The pose's orthonormal frame: ahead, right, above. */
+static void frame_of(const fg_listener *p, fg_vec3 f[3])
+{
+    f[0] = fg_v3_unit(fg_v3_load(p->forward));
+    f[1] = fg_v3_unit(fg_v3_cross(f[0], fg_v3_unit(fg_v3_load(p->up))));
+    f[2] = fg_v3_cross(f[1], f[0]);
 }
 
 void fg_trajectory_init(fg_trajectory *t, const fg_listener *pose, uint64_t number)
 {
     t->first = 0;
     t->count = 1;
-    t->pose[0] = *pose;
+    t->pose[0] = (fg_trajectory_pose){.pose = *pose};
     t->number = number;
-    t->still = at_rest(pose);
+    t->still = fg_listener_at_rest(pose);
 }
 
 void fg_trajectory_push(fg_trajectory *t, const fg_listener *pose, uint64_t number)
 {
     /* the latest value wins: a pose replaces those from its time on */
-    while (t->count > 1 && cat(t, t->count - 1)->time_s >= pose->time_s)
+    while (t->count > 1 && cat(t, t->count - 1)->pose.time_s >= pose->time_s)
         t->count--;
-    fg_listener p = *pose;
-    const fg_listener *prev = cat(t, t->count - 1);
-    if (prev->time_s >= p.time_s) {
+    fg_trajectory_pose e = {.pose = *pose};
+    fg_listener *p = &e.pose;
+    const fg_listener *prev = &cat(t, t->count - 1)->pose;
+    if (prev->time_s >= p->time_s) {
         t->count = 0; /* it replaces the only pose left */
-    } else if (at_rest(&p) && !same_place(&p, prev)) {
+    } else {
+        double h = p->time_s - prev->time_s;
         /* moved without a velocity: the chord from the pose before */
-        double h = p.time_s - prev->time_s;
-        for (int k = 0; k < 3; k++)
-            p.velocity[k] = (p.position[k] - prev->position[k]) / h;
+        if (!pose->velocity_given && zero3(pose->velocity) && !same_place(p, prev))
+            for (int k = 0; k < 3; k++)
+                p->velocity[k] = (p->position[k] - prev->position[k]) / h;
+        fg_vec3 fa[3], fb[3];
+        frame_of(prev, fa);
+        frame_of(p, fb);
+        fg_vec3 turn = fg_rot_between(fa, fb);
+        /* turned without an angular velocity: the turn over the time */
+        if (!pose->velocity_given && zero3(pose->angular_velocity) &&
+            !same_orientation(p, prev))
+            fg_v3_store(fg_v3_div(turn, h), p->angular_velocity);
+        fg_v3_store(turn, e.turn);
+        fg_v3_store(fg_rot_jacobian_inverse(turn, fg_v3_load(p->angular_velocity)), e.turn_end);
     }
     if (t->count == FG_TRAJECTORY_POSES) {
         t->first = (t->first + 1) % FG_TRAJECTORY_POSES;
         t->count--;
     }
-    *at(t, t->count++) = p;
+    *at(t, t->count++) = e;
     t->number = number;
-    t->still = t->count == 1 && at_rest(&p);
+    t->still = t->count == 1 && fg_listener_at_rest(p);
 }
 
 void fg_trajectory_forget(fg_trajectory *t, double now_s)
 {
     double horizon = now_s - FG_TRAJECTORY_MEMORY_S;
     /* drop the oldest while the next one is already in force at the horizon */
-    while (t->count > 1 && cat(t, 1)->time_s <= horizon) {
+    while (t->count > 1 && cat(t, 1)->pose.time_s <= horizon) {
         t->first = (t->first + 1) % FG_TRAJECTORY_POSES;
         t->count--;
     }
     /* come to rest: from now on every time sees the one pose left */
-    if (t->count == 1 && at_rest(cat(t, 0)))
+    if (t->count == 1 && fg_listener_at_rest(&cat(t, 0)->pose))
         t->still = true;
 }
 
@@ -85,82 +111,84 @@ void fg_head_of_pose(const fg_listener *pose, fg_head *out)
     memset(out->right_rate, 0, sizeof out->right_rate);
 }
 
-static fg_vec3 unit_blend(const double a[3], const double b[3], double u)
+/* The head's orientation: frame f turned by phi, turning at w. */
+static void turned(const fg_vec3 f[3], fg_vec3 phi, fg_vec3 w, fg_head *out)
 {
-    fg_vec3 x = fg_v3_unit(fg_v3_load(a)), y = fg_v3_unit(fg_v3_load(b));
-    return fg_v3_unit(fg_v3_add(fg_v3_scale(x, 1.0 - u), fg_v3_scale(y, u)));
+    fg_vec3 right = fg_rot_apply(phi, f[1]);
+    fg_v3_store(fg_rot_apply(phi, f[0]), out->forward);
+    fg_v3_store(right, out->right);
+    fg_v3_store(fg_rot_apply(phi, f[2]), out->up);
+    fg_v3_store(fg_v3_cross(w, right), out->right_rate);
 }
 
-static fg_vec3 right_of(fg_vec3 forward, fg_vec3 up)
-{
-    return fg_v3_unit(fg_v3_cross(forward, up));
-}
-
-/* The head between poses a and b at fraction u of the span h. */
-static void hermite(const fg_listener *a, const fg_listener *b, double u, double h, fg_head *out)
+/* The head between poses a and b (b's span) at fraction u of the span h. */
+static void hermite(const fg_listener *a, const fg_trajectory_pose *b, double u, double h,
+                    fg_head *out)
 {
     double u2 = u * u, u3 = u2 * u;
     double h00 = 2 * u3 - 3 * u2 + 1, h10 = u3 - 2 * u2 + u, h01 = 3 * u2 - 2 * u3, h11 = u3 - u2;
     double d00 = 6 * u2 - 6 * u, d10 = 3 * u2 - 4 * u + 1, d01 = 6 * u - 6 * u2, d11 = 3 * u2 - 2 * u;
+    const fg_listener *q = &b->pose;
     for (int k = 0; k < 3; k++) {
-        double p0 = a->position[k], p1 = b->position[k];
-        double m0 = h * a->velocity[k], m1 = h * b->velocity[k];
+        double p0 = a->position[k], p1 = q->position[k];
+        double m0 = h * a->velocity[k], m1 = h * q->velocity[k];
         out->position[k] = h00 * p0 + h10 * m0 + h01 * p1 + h11 * m1;
         out->velocity[k] = (d00 * p0 + d10 * m0 + d01 * p1 + d11 * m1) / h;
     }
-    fg_vec3 f = unit_blend(a->forward, b->forward, u), up = unit_blend(a->up, b->up, u);
-    fg_v3_store(f, out->forward);
-    fg_v3_store(up, out->up);
-    fg_v3_store(right_of(f, up), out->right);
-    fg_vec3 r0 = right_of(fg_v3_unit(fg_v3_load(a->forward)), fg_v3_unit(fg_v3_load(a->up)));
-    fg_vec3 r1 = right_of(fg_v3_unit(fg_v3_load(b->forward)), fg_v3_unit(fg_v3_load(b->up)));
-    fg_v3_store(fg_v3_scale(fg_v3_sub(r1, r0), 1.0 / h), out->right_rate);
+    /* phi from 0 (a's frame) to the turn, tangents h w_a and h J^-1 w_b */
+    double phi[3], rate[3];
+    for (int k = 0; k < 3; k++) {
+        double m0 = h * a->angular_velocity[k], m1 = h * b->turn_end[k];
+        phi[k] = h10 * m0 + h01 * b->turn[k] + h11 * m1;
+        rate[k] = (d10 * m0 + d01 * b->turn[k] + d11 * m1) / h;
+    }
+    fg_vec3 f[3], ph = fg_v3_load(phi);
+    frame_of(a, f);
+    turned(f, ph, fg_rot_jacobian(ph, fg_v3_load(rate)), out);
 }
 
-/* A pose held (before the oldest) or carried along its velocity for
- * dt_s (after the newest, dt_s >= 0). */
-static void carried(const fg_listener *p, double dt_s, fg_head *out)
+/* A pose carried along its velocity and angular velocity for d_s (after
+ * the newest, d_s <= FG_EXTRAPOLATE_MAX_S), moving at them when `moving`,
+ * else held there. */
+static void carried(const fg_listener *p, double d_s, bool moving, fg_head *out)
 {
-    double d = dt_s < FG_EXTRAPOLATE_MAX_S ? dt_s : FG_EXTRAPOLATE_MAX_S;
-    bool moving = dt_s < FG_EXTRAPOLATE_MAX_S;
+    fg_vec3 w = fg_v3_load(p->angular_velocity), f[3];
     for (int k = 0; k < 3; k++) {
-        out->position[k] = p->position[k] + p->velocity[k] * d;
+        out->position[k] = p->position[k] + p->velocity[k] * d_s;
         out->velocity[k] = moving ? p->velocity[k] : 0.0;
     }
-    fg_vec3 f = fg_v3_unit(fg_v3_load(p->forward)), up = fg_v3_unit(fg_v3_load(p->up));
-    fg_v3_store(f, out->forward);
-    fg_v3_store(up, out->up);
-    fg_v3_store(right_of(f, up), out->right);
-    memset(out->right_rate, 0, sizeof out->right_rate);
+    frame_of(p, f);
+    turned(f, fg_v3_scale(w, d_s), moving ? w : fg_v3(0.0, 0.0, 0.0), out);
 }
 
 void fg_trajectory_head(const fg_trajectory *t, double t_s, fg_head *out)
 {
     if (t->still) {
-        fg_head_of_pose(cat(t, 0), out);
+        fg_head_of_pose(&cat(t, 0)->pose, out);
         return;
     }
-    const fg_listener *oldest = cat(t, 0), *newest = cat(t, t->count - 1);
+    const fg_listener *oldest = &cat(t, 0)->pose, *newest = &cat(t, t->count - 1)->pose;
     if (t_s >= newest->time_s) {
-        carried(newest, t_s - newest->time_s, out);
+        double d = t_s - newest->time_s;
+        carried(newest, fmin(d, FG_EXTRAPOLATE_MAX_S), d < FG_EXTRAPOLATE_MAX_S, out);
         return;
     }
     if (t_s <= oldest->time_s) {
-        carried(oldest, 0.0, out);
-        memset(out->velocity, 0, sizeof out->velocity);
+        carried(oldest, 0.0, false, out);
         return;
     }
     /* the last pose at or before t_s: times are usually near the newest */
     unsigned lo = 0, hi = t->count - 1;
     while (hi - lo > 1) {
         unsigned mid = lo + (hi - lo) / 2;
-        if (cat(t, mid)->time_s <= t_s)
+        if (cat(t, mid)->pose.time_s <= t_s)
             lo = mid;
         else
             hi = mid;
     }
-    const fg_listener *a = cat(t, lo), *b = cat(t, lo + 1);
-    double h = b->time_s - a->time_s;
+    const fg_listener *a = &cat(t, lo)->pose;
+    const fg_trajectory_pose *b = cat(t, lo + 1);
+    double h = b->pose.time_s - a->time_s;
     hermite(a, b, (t_s - a->time_s) / h, h, out);
 }
 
@@ -205,7 +233,7 @@ double fg_trajectory_reach_m(const fg_trajectory *t, const double p[3], double a
      * h11 (h v1 - dp), |h10|, |h11| <= 4/27: it strays from the farther
      * pose by at most 0.3 (h max|v| + |dp|) */
     for (unsigned i = 0; !t->still && i + 1 < t->count; i++) {
-        const fg_listener *q0 = cat(t, i), *q1 = cat(t, i + 1);
+        const fg_listener *q0 = &cat(t, i)->pose, *q1 = &cat(t, i + 1)->pose;
         if (q1->time_s <= a_s || q0->time_s >= b_s)
             continue;
         double speed = fmax(fg_v3_len(fg_v3_load(q0->velocity)), fg_v3_len(fg_v3_load(q1->velocity)));

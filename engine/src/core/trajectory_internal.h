@@ -13,12 +13,24 @@
  * positions with both velocities as tangents, so position and velocity are
  * continuous; a pose published without a velocity (all three zero) while
  * it moved takes the chord from the pose before it (exact for straight
- * motion at a constant speed). Directions are the normalised linear blend
- * of the two poses' forward and up. After the newest pose the head
- * continues along its velocity for at most FG_EXTRAPOLATE_MAX_S, then
- * holds; before the oldest it holds the oldest.
+ * motion at a constant speed). The orientation is a pose's orthonormal
+ * frame (ahead = forward, right = forward x up, above = right x ahead)
+ * turned: between poses a and b it is exp(phi(t)) applied to a's frame,
+ * phi the cubic Hermite from 0 to the rotation vector taking a's frame
+ * onto b's (util/fg_rotation.h) with tangents h w_a and h J^-1 w_b, so the
+ * angular velocity J(phi) dphi/dt is w_a at a and w_b at b and continuous
+ * between. A pose published without an angular velocity (all zero) while
+ * it turned takes the rotation from the pose before over the time
+ * between: for a steady turn both ends' rates are the turn's, phi is
+ * linear and the path is the turn exactly, at its exact rate. A pose
+ * with velocity_given keeps its velocities as given (zeros: at rest, so
+ * the body stops at it). After the
+ * newest pose the head continues along its velocity and turns at its
+ * angular velocity for at most FG_EXTRAPOLATE_MAX_S, then holds; before
+ * the oldest it holds the oldest.
  *
- * A trajectory is still when it holds one pose at rest: then every time
+ * A trajectory is still when it holds one pose at rest (velocity and
+ * angular velocity all zero): then every time
  * sees that pose exactly as published (no normalisation), and the sound of
  * a still listener does not change with this module.
  *
@@ -41,7 +53,8 @@
 typedef struct fg_head {
     double position[3];
     double velocity[3];   /* m/s */
-    double forward[3], up[3];
+    double forward[3], up[3]; /* unit and perpendicular but in a still
+                               * trajectory (the pose as published) */
     double right[3];      /* unit: forward x up, normalised */
     double right_rate[3]; /* d right / dt, 1/s: the ears' share of a turn */
 } fg_head;
@@ -61,8 +74,16 @@ typedef struct fg_ears {
     unsigned count;
 } fg_ears;
 
+/* A pose the trajectory holds, and its span from the pose before. */
+typedef struct fg_trajectory_pose {
+    fg_listener pose;     /* as published, the velocities not known filled in */
+    double turn[3];       /* the rotation vector from the pose before's frame
+                           * to this one's, |turn| <= pi */
+    double turn_end[3];   /* J(turn)^-1 w: the span's end tangent, rad/s */
+} fg_trajectory_pose;
+
 typedef struct fg_trajectory {
-    fg_listener pose[FG_TRAJECTORY_POSES]; /* a ring: pose[(first + i) % N], times ascending */
+    fg_trajectory_pose pose[FG_TRAJECTORY_POSES]; /* a ring: pose[(first + i) % N], times ascending */
     unsigned first, count;
     uint64_t number;      /* the publication number of the newest pose absorbed */
     bool still;           /* one pose, at rest */
