@@ -874,6 +874,36 @@ static void swing_and_rest(fg_engine *e, fg_voice_id id, int b, void *arg)
  * 0.51 m away from the listener at 5 m/s in a 10 m/s wind and held: 1.5 s
  * later it sounds as loud as the same rod posted at rest where it stopped
  * (within 0.01 dB; 0.51 m farther would be -1.2 dB). */
+/* Posts o and renders 120 blocks of 256 frames, publish moving it: the
+ * louder ear peaks above min_pa while it moves (before rest_s) and is
+ * exactly silent from quiet_s on. */
+static void expect_silent_at_rest(const fg_aero_object *o,
+                                  void (*publish)(fg_engine *, fg_voice_id, int, void *),
+                                  void *arg, double rest_s, double quiet_s, double min_pa,
+                                  const char *what)
+{
+    fg_engine *e = make_engine(2);
+    fg_voice_id id;
+    assert_int_equal(fg_aero_object_post(e, o, &id), FG_OK);
+    float *ears[2];
+    render_ears(e, id, 120, publish, arg, ears);
+    fg_engine_destroy(e);
+    double moving = 0.0, after = 0.0;
+    for (size_t i = 0; i < 120 * 256; i++) {
+        double x = fmax(fabs(ears[0][i]), fabs(ears[1][i]));
+        if (i / FS < rest_s)
+            moving = fmax(moving, x);
+        else if (i / FS >= quiet_s)
+            after = fmax(after, x);
+    }
+    print_message("%s: peak %.4g Pa moving, %.4g Pa from %.1f ms after the stop\n", what, moving,
+                  after, 1e3 * (quiet_s - rest_s));
+    assert_true(moving > min_pa);
+    if (after != 0.0)
+        fail_msg("%s: still sounds %.4g Pa after it stopped", what, after);
+    free(ears[0]), free(ears[1]);
+}
+
 static void coming_to_rest(void **state)
 {
     (void)state;
@@ -883,69 +913,21 @@ static void coming_to_rest(void **state)
     fg_aero_object o = rod(t, from, 0.0);
     o.start_m = -0.25, o.end_m = 0.25;
     stopping s = {.start = o.pose, .dir = {1, 0, 0}, .speed_m_s = 10.0, .move_blocks = 19};
-    fg_engine *e = make_engine(2);
-    fg_voice_id id;
-    assert_int_equal(fg_aero_object_post(e, &o, &id), FG_OK);
-    float *ears[2];
-    render_ears(e, id, 120, stop_and_rest, &s, ears);
-    fg_engine_destroy(e);
     double rest_s = s.move_blocks * block_s, quiet_s = rest_s + 2 * block_s + 3.1 / C;
-    double moving = 0, after = 0;
-    for (size_t i = 0; i < 120 * 256; i++) {
-        double x = fmax(fabs(ears[0][i]), fabs(ears[1][i]));
-        if (i / FS < rest_s)
-            moving = fmax(moving, x);
-        else if (i / FS >= quiet_s)
-            after = fmax(after, x);
-    }
-    print_message("swept at 10 m/s, then held: peak %.4g Pa moving, %.4g Pa from %.1f ms after "
-                  "the stop\n", moving, after, 1e3 * (quiet_s - rest_s));
-    assert_true(moving > 1e-6);
-    if (after != 0.0)
-        fail_msg("a body at rest still sounds %.4g Pa after it stopped", after);
-    free(ears[0]), free(ears[1]);
-
+    expect_silent_at_rest(&o, stop_and_rest, &s, rest_s, quiet_s, 1e-6,
+                          "swept at 10 m/s, then held");
     /* swept the same way and told once that it is at rest where it stops */
-    e = make_engine(2);
-    assert_int_equal(fg_aero_object_post(e, &o, &id), FG_OK);
-    render_ears(e, id, 120, stop_once, &s, ears);
-    fg_engine_destroy(e);
-    moving = 0, after = 0;
-    for (size_t i = 0; i < 120 * 256; i++) {
-        double x = fmax(fabs(ears[0][i]), fabs(ears[1][i]));
-        if (i / FS < rest_s)
-            moving = fmax(moving, x);
-        else if (i / FS >= quiet_s)
-            after = fmax(after, x);
-    }
-    print_message("swept at 10 m/s, told once it rests: peak %.4g Pa moving, %.4g Pa from %.1f ms "
-                  "after the stop\n", moving, after, 1e3 * (quiet_s - rest_s));
-    assert_true(moving > 1e-6);
-    if (after != 0.0)
-        fail_msg("a body told it is at rest still sounds %.4g Pa after it stopped", after);
-    free(ears[0]), free(ears[1]);
-
-    /* swung at 20 rad/s about its middle and held: no turn goes on */
-    e = make_engine(2);
-    assert_int_equal(fg_aero_object_post(e, &o, &id), FG_OK);
+    expect_silent_at_rest(&o, stop_once, &s, rest_s, quiet_s, 1e-6,
+                          "swept at 10 m/s, told once it rests");
+    /* swung at 20 rad/s about its middle and held: no turn goes on (its
+     * halves' lifts are opposed: they mostly cancel) */
     int swing_blocks = s.move_blocks;
-    render_ears(e, id, 120, swing_and_rest, &swing_blocks, ears);
-    fg_engine_destroy(e);
-    moving = 0, after = 0;
-    for (size_t i = 0; i < 120 * 256; i++) {
-        double x = fmax(fabs(ears[0][i]), fabs(ears[1][i]));
-        if (i / FS < rest_s)
-            moving = fmax(moving, x);
-        else if (i / FS >= quiet_s)
-            after = fmax(after, x);
-    }
-    print_message("swung at 20 rad/s, then held: peak %.4g Pa turning, %.4g Pa from %.1f ms "
-                  "after the stop\n", moving, after, 1e3 * (quiet_s - rest_s));
-    assert_true(moving > 1e-8); /* its halves' lifts are opposed: they mostly cancel */
-    if (after != 0.0)
-        fail_msg("a body stopped turning still sounds %.4g Pa", after);
-    free(ears[0]), free(ears[1]);
+    expect_silent_at_rest(&o, swing_and_rest, &swing_blocks, rest_s, quiet_s, 1e-8,
+                          "swung at 20 rad/s, then held");
 
+    fg_engine *e;
+    fg_voice_id id;
+    float *ears[2];
     static const double near[3] = {0, 3, 0};
     fg_aero_object moved = rod(t, near, V0);
     moved.start_m = -0.25, moved.end_m = 0.25;
