@@ -122,6 +122,24 @@ static bool all_zero(const float *x, size_t n)
     return true;
 }
 
+/* The window win (2B frames) split into x: frame 2k as element k, frame
+ * 2k + 1 as element B + k. */
+static void split_window(const float *win, float *x, size_t B)
+{
+    size_t k = 0;
+#ifdef FG_VF_SHUFFLE
+    for (; k + V <= B; k += V) {
+        fg_vf a = fg_vf_load(win + 2 * k), b = fg_vf_load(win + 2 * k + V);
+        fg_vf_store(x + k, fg_vf_even(a, b));
+        fg_vf_store(x + B + k, fg_vf_odd(a, b));
+    }
+#endif
+    for (; k < B; k++) {
+        x[k] = win[2 * k];
+        x[B + k] = win[2 * k + 1];
+    }
+}
+
 /* Lane l of c->lanes gets the window win[l] (2B frames) split: frame 2k
  * as element k, frame 2k + 1 as element B + k. */
 static void gather_windows(fg_convolver *c, const float *const *win)
@@ -194,19 +212,28 @@ static void fill_lanes(fg_convolver *c, const float *const *src)
 }
 
 /* The forward transforms of the inputs in who[0 .. count) into their
- * newest history slots; then their windows move on by a block. */
+ * newest history slots, count <= FG_VF_LANES: one per lane, or, for fewer
+ * inputs than lanes, each with its elements across the lanes (the same
+ * floats: fft_lanes_internal.h); then their windows move on by a block. */
 static void forward_batch(fg_convolver *c, const unsigned *who, unsigned count)
 {
     const size_t B = c->block, n = 2 * B;
-    const float *win[V];
     float *slot[V];
-    for (unsigned l = 0; l < V; l++)
-        win[l] = l < count ? c->in + (size_t)who[l] * n : c->zeros;
-    gather_windows(c, win);
-    fg_fft_lanes_forward(&c->fft, c->lanes, c->work);
     for (unsigned l = 0; l < V; l++) /* lanes past count are not written */
         slot[l] = l < count ? c->history + ((size_t)who[l] * c->partitions + c->newest) * n : NULL;
-    scatter_lanes(c, slot, count);
+    if (c->fft.one && count < V) {
+        for (unsigned l = 0; l < count; l++) {
+            split_window(c->in + (size_t)who[l] * n, slot[l], B);
+            fg_fft_lanes_forward_one(&c->fft, slot[l], c->work);
+        }
+    } else {
+        const float *win[V];
+        for (unsigned l = 0; l < V; l++)
+            win[l] = l < count ? c->in + (size_t)who[l] * n : c->zeros;
+        gather_windows(c, win);
+        fg_fft_lanes_forward(&c->fft, c->lanes, c->work);
+        scatter_lanes(c, slot, count);
+    }
     for (unsigned l = 0; l < count; l++)
         memcpy(c->in + (size_t)who[l] * n, c->in + (size_t)who[l] * n + B, B * sizeof(float));
 }
@@ -224,9 +251,15 @@ static void inverse_outputs(fg_convolver *c)
             time[l] = l < count ? c->acc + (size_t)(o0 + l) * n : NULL;
             spectra[l] = l < count ? time[l] : c->zeros;
         }
-        fill_lanes(c, spectra);
-        fg_fft_lanes_inverse(&c->fft, c->lanes, c->work);
-        scatter_lanes(c, time, count); /* each window, split, where its spectrum was */
+        /* each window, split, where its spectrum was */
+        if (c->fft.one && count < V) {
+            for (unsigned l = 0; l < count; l++)
+                fg_fft_lanes_inverse_one(&c->fft, time[l], c->work);
+        } else {
+            fill_lanes(c, spectra);
+            fg_fft_lanes_inverse(&c->fft, c->lanes, c->work);
+            scatter_lanes(c, time, count);
+        }
         /* sample s of the window is element s / 2 (even s) or B + s / 2 */
         for (unsigned l = 0; l < count; l++) {
             float *y = c->out + (size_t)(o0 + l) * B;
@@ -285,8 +318,7 @@ static void run_block(fg_convolver *c)
         /* outputs two at a time; an odd last one pairs with the spare */
         for (size_t o = 0; o < O; o += 2) {
             size_t o1 = o + 1 < O ? o + 1 : O;
-            c->mac(c->acc + o * n, c->acc + o1 * n, x, h, o * n, (o1 < O ? o1 : o) * n, slots,
-                         B);
+            c->mac(c->acc + o * n, c->acc + o1 * n, x, h, o * n, (o1 < O ? o1 : o) * n, slots, B);
         }
     }
     inverse_outputs(c);

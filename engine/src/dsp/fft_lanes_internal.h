@@ -23,6 +23,16 @@
  * not multiplied. Then the usual split of a real transform into its even
  * and odd halves; the inverse runs the forward stages on the conjugate.
  *
+ * One signal alone (the _one functions, where the plan says `one`: N/2 at
+ * least 4 FG_VF_LANES) is transformed with its neighbouring elements
+ * across the lanes instead, for the callers that have fewer signals than
+ * lanes: bit for bit the same floats as its lane would hold (the same
+ * operations on each element; tests/test_fft_lanes.c), for a quarter of
+ * the butterflies and no transposes into and out of the lanes (at 128
+ * points, 2.3 thousand instructions forward against 5.7 for the lane
+ * transform, plus its transposes). Its layouts are those above for a
+ * single lane (element k at index k).
+ *
  * [main-thread] init allocates; forward and inverse never allocate, and
  * one plan may serve several threads at once (it is read-only). */
 #ifndef FULGUR_DSP_FFT_LANES_INTERNAL_H
@@ -34,13 +44,18 @@
 #include "fg_simd.h"
 
 typedef struct fg_fft_lanes {
-    size_t n;         /* real length N */
-    bool radix2;      /* log2(N/2) is odd: a radix-2 stage comes first */
-    size_t stages;    /* radix-2 and radix-4 stages in all */
-    float *twiddle;   /* per stage of length L (N/2, then down by its radix): the
-                         radix-2 one cos then sin of 2 pi j / L, j < L/2; a radix-4
-                         one cos then sin of 2 pi j k / L, j < L/4, for k = 1, 2, 3 */
-    float *split;     /* cos, sin of 2 pi k / N, k <= N/4: the real split */
+    size_t n;       /* real length N */
+    bool radix2;    /* log2(N/2) is odd: a radix-2 stage comes first */
+    size_t stages;  /* radix-2 and radix-4 stages in all */
+    float *twiddle; /* per stage of length L (N/2, then down by its radix): the
+                       radix-2 one cos then sin of 2 pi j / L, j < L/2; a radix-4
+                       one cos then sin of 2 pi j k / L, j < L/4, for k = 1, 2, 3 */
+    float *split;   /* cos, sin of 2 pi k / N, k <= N/4: the real split */
+    bool one;       /* the single-signal path is available */
+    float *spread;  /* its twiddles: each stage's runs spread to one value per
+                       butterfly (spread_stages floats), then the split's cos
+                       and sin runs (k < N/4) */
+    size_t spread_stages; /* the floats of spread before the split's runs */
 } fg_fft_lanes;
 
 /* Prepares a plan for length n (a power of two in FG_FFT_MIN_SIZE ..
@@ -55,5 +70,12 @@ void fg_fft_lanes_deinit(fg_fft_lanes *f);
 void fg_fft_lanes_forward(const fg_fft_lanes *f, float *x, float *work);
 /* x: a packed spectrum per lane in, the split signal out; work as above. */
 void fg_fft_lanes_inverse(const fg_fft_lanes *f, float *x, float *work);
+
+/* The same for one signal: x[0 .. n) a split signal in, its packed
+ * spectrum out (work: n floats, overwritten); only where f->one. */
+void fg_fft_lanes_forward_one(const fg_fft_lanes *f, float *x, float *work);
+/* x[0 .. n): a packed spectrum in, the split signal out; only where
+ * f->one. */
+void fg_fft_lanes_inverse_one(const fg_fft_lanes *f, float *x, float *work);
 
 #endif

@@ -10,7 +10,8 @@
  * written: a vector kernel gives the same floats as the same expression on
  * scalars (no reassociation; nothing is contracted into FMAs unless the
  * compiler is told to). Where the compiler has lane shuffles,
- * FG_VF_SHUFFLE is defined with a 4 x 4 transpose and an even/odd split.
+ * FG_VF_SHUFFLE is defined with a 4 x 4 transpose, an even/odd split, a
+ * reversal and an interleave.
  *
  * A file built for AVX2 (with -mavx2, chosen at run time: see
  * field/kernels_avx2.h) may define FG_SIMD_WIDE before it includes this
@@ -94,6 +95,21 @@ static inline fg_vf fg_vf_even(fg_vf a, fg_vf b)
 static inline fg_vf fg_vf_odd(fg_vf a, fg_vf b)
 {
     return __builtin_shufflevector(a, b, 1, 3, 5, 7);
+}
+
+/* The four floats of a, last first. */
+static inline fg_vf fg_vf_reverse(fg_vf a)
+{
+    return __builtin_shufflevector(a, a, 3, 2, 1, 0);
+}
+
+/* a0 b0 a1 b1 a2 b2 a3 b3 to p[0 .. 8). */
+static inline void fg_vf_interleave(fg_vf a, fg_vf b, float *p)
+{
+    fg_vf lo = __builtin_shufflevector(a, b, 0, 4, 1, 5),
+          hi = __builtin_shufflevector(a, b, 2, 6, 3, 7);
+    memcpy(p, &lo, sizeof lo);
+    memcpy(p + 4, &hi, sizeof hi);
 }
 #endif
 #endif
