@@ -26,6 +26,8 @@ void fg_convolver_deinit(fg_convolver *c)
     free(c->live);
     free(c->quiet);
     free(c->fed);
+    free(c->awake);
+    free(c->given);
     free(c->in);
     free(c->out);
     free(c->acc);
@@ -85,6 +87,9 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
     c->live = calloc((size_t)inputs * P, sizeof *c->live);
     c->quiet = calloc(inputs, sizeof *c->quiet);
     c->fed = calloc(inputs, sizeof *c->fed);
+    c->words = (inputs + 63) / 64;
+    c->awake = calloc(c->words, sizeof *c->awake);
+    c->given = calloc(c->words, sizeof *c->given);
     c->in = alloc_floats((size_t)inputs * n);
     c->out = alloc_floats((size_t)outputs * block);
     c->acc = alloc_floats((size_t)(outputs + 1) * n);
@@ -92,8 +97,8 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
     c->lanes = alloc_floats(n * V);
     c->work = alloc_floats(n * V);
     c->zeros = alloc_floats(n);
-    if (!c->filter || !c->history || !c->live || !c->quiet || !c->fed || !c->in || !c->out ||
-        !c->acc || !c->pairs || !c->lanes || !c->work || !c->zeros ||
+    if (!c->filter || !c->history || !c->live || !c->quiet || !c->fed || !c->awake || !c->given ||
+        !c->in || !c->out || !c->acc || !c->pairs || !c->lanes || !c->work || !c->zeros ||
         !transform_filter(c, length, filter)) {
         fg_convolver_deinit(c);
         return false;
@@ -279,23 +284,27 @@ static void run_block(fg_convolver *c)
     c->newest = (c->newest + 1) % P;
     bool any = false;
     unsigned who[V], count = 0;
-    for (unsigned i = 0; i < c->inputs; i++) {
-        float *x = c->in + (size_t)i * n;
-        /* a block spectrum is zero once this block and the one before are */
-        bool silent = !c->fed[i] || all_zero(x + B, B);
-        c->fed[i] = false;
-        c->quiet[i] = silent ? (c->quiet[i] < P + 2 ? c->quiet[i] + 1 : P + 2) : 0;
-        bool live = c->quiet[i] <= 1;
-        c->live[(size_t)i * P + c->newest] = live;
-        if (live) { /* (else both halves of its window are zero already) */
-            who[count++] = i;
-            if (count == V) {
-                forward_batch(c, who, count);
-                count = 0;
+    for (size_t w = 0; w < c->words; w++)
+        for (uint64_t bits = c->awake[w]; bits; bits &= bits - 1) {
+            unsigned i = (unsigned)(64 * w) + (unsigned)__builtin_ctzll(bits);
+            float *x = c->in + (size_t)i * n;
+            /* a block spectrum is zero once this block and the one before are */
+            bool silent = !c->fed[i] || all_zero(x + B, B);
+            c->fed[i] = false;
+            c->quiet[i] = silent ? (c->quiet[i] < P + 2 ? c->quiet[i] + 1 : P + 2) : 0;
+            if (c->quiet[i] == P + 2) /* every slot's flag below is down by now */
+                c->awake[w] &= ~(bits & -bits);
+            bool live = c->quiet[i] <= 1;
+            c->live[(size_t)i * P + c->newest] = live;
+            if (live) { /* (else both halves of its window are zero already) */
+                who[count++] = i;
+                if (count == V) {
+                    forward_batch(c, who, count);
+                    count = 0;
+                }
             }
+            any = any || c->quiet[i] <= P;
         }
-        any = any || c->quiet[i] <= P;
-    }
     if (count > 0)
         forward_batch(c, who, count);
     if (!any) {
@@ -304,41 +313,53 @@ static void run_block(fg_convolver *c)
     }
     memset(c->acc, 0, (O + 1) * n * sizeof *c->acc);
     const float **x = c->pairs, **h = c->pairs + P;
-    for (unsigned i = 0; i < c->inputs; i++) {
-        if (c->quiet[i] > P)
-            continue; /* its whole history is zero */
-        size_t slots = 0;
-        for (size_t p = 0; p < P; p++) {
-            size_t slot = (c->newest + P - p) % P;
-            if (!c->live[(size_t)i * P + slot])
-                continue; /* a block of silence p blocks ago */
-            x[slots] = c->history + ((size_t)i * P + slot) * n;
-            h[slots++] = c->filter + ((size_t)i * P + p) * O * n;
+    for (size_t w = 0; w < c->words; w++)
+        for (uint64_t bits = c->awake[w]; bits; bits &= bits - 1) {
+            unsigned i = (unsigned)(64 * w) + (unsigned)__builtin_ctzll(bits);
+            if (c->quiet[i] > P)
+                continue; /* its whole history is zero */
+            size_t slots = 0;
+            for (size_t p = 0; p < P; p++) {
+                size_t slot = (c->newest + P - p) % P;
+                if (!c->live[(size_t)i * P + slot])
+                    continue; /* a block of silence p blocks ago */
+                x[slots] = c->history + ((size_t)i * P + slot) * n;
+                h[slots++] = c->filter + ((size_t)i * P + p) * O * n;
+            }
+            /* outputs two at a time; an odd last one pairs with the spare */
+            for (size_t o = 0; o < O; o += 2) {
+                size_t o1 = o + 1 < O ? o + 1 : O;
+                c->mac(c->acc + o * n, c->acc + o1 * n, x, h, o * n, (o1 < O ? o1 : o) * n, slots,
+                       B);
+            }
         }
-        /* outputs two at a time; an odd last one pairs with the spare */
-        for (size_t o = 0; o < O; o += 2) {
-            size_t o1 = o + 1 < O ? o + 1 : O;
-            c->mac(c->acc + o * n, c->acc + o1 * n, x, h, o * n, (o1 < O ? o1 : o) * n, slots, B);
-        }
-    }
     inverse_outputs(c);
 }
 
 void fg_convolver_process(fg_convolver *c, const float *const *in, float *const *out, size_t n)
 {
     const size_t B = c->block;
+    for (size_t w = 0; w < c->words; w++)
+        c->given[w] = 0;
+    for (unsigned i = 0; i < c->inputs; i++)
+        if (in[i])
+            c->given[i / 64] |= (uint64_t)1 << (i % 64);
     size_t done = 0;
     while (done < n) {
         size_t run = B - c->fill < n - done ? B - c->fill : n - done;
-        for (unsigned i = 0; i < c->inputs; i++) {
-            float *to = c->in + (size_t)i * 2 * B + B + c->fill;
-            if (in[i]) {
-                memcpy(to, in[i] + done, run * sizeof(float));
-                c->fed[i] = true;
-            } else if (c->quiet[i] < 2) {
-                /* (from two silent blocks on, both halves of the window
-                 * are zero: run_block moves no block of it) */
-                memset(to, 0, run * sizeof(float));
+        for (size_t w = 0; w < c->words; w++) {
+            c->awake[w] |= c->given[w];
+            for (uint64_t bits = c->awake[w]; bits; bits &= bits - 1) {
+                unsigned i = (unsigned)(64 * w) + (unsigned)__builtin_ctzll(bits);
+                float *to = c->in + (size_t)i * 2 * B + B + c->fill;
+                if (in[i]) {
+                    memcpy(to, in[i] + done, run * sizeof(float));
+                    c->fed[i] = true;
+                } else if (c->quiet[i] < 2) {
+                    /* (from two silent blocks on, both halves of the
+                     * window are zero: run_block moves no block of it) */
+                    memset(to, 0, run * sizeof(float));
+                }
             }
         }
         /* + 0: a sum that flushed to -0 leaves as +0, so silence has one

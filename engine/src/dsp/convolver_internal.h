@@ -37,6 +37,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "fft_internal.h"
 #include "fft_lanes_internal.h"
@@ -56,6 +57,11 @@ typedef struct fg_convolver {
     size_t *quiet;        /* [input]: blocks since the input was last non-zero */
     unsigned char *fed;   /* [input]: frames of the block being filled were given (not
                              NULL): else the block is known to be zero */
+    size_t words;         /* 64-bit words of the input masks below */
+    uint64_t *awake;      /* [words]: bit i: input i has a history that is not all zero
+                             or was given frames (quiet[i] < P + 2, or fed); only these
+                             are visited, in the order of their indices */
+    uint64_t *given;      /* [words]: the inputs the current process call was given */
     float *in;            /* [input][2B]: the previous block and the one being filled */
     float *out;           /* [output][B]: the block being played */
     float *acc;           /* [output + 1][2B]: the outputs' spectra, and a spare */
