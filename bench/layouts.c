@@ -21,7 +21,7 @@
 #include "synth_tree.h"
 
 #define SEGMENTS 9860
-#define REPEATS 5
+#define REPEATS 15
 #define BLOCK 512
 
 typedef struct layout_case {
