@@ -2,16 +2,17 @@
 # usage: cli_lazy_libraries.sh FULGUR SCENE
 # Issue 17: the libraries a WAV render does not call are opened on first
 # use (host/common/lazy_library.h). A render of SCENE, --help and
-# --version map no FFTW, libmysofa, libsamplerate or zlib (the list is
-# every object the dynamic loader maps, dlopen included: glibc's
-# LD_DEBUG=files); the control, a binaural render, maps each of them but
-# zlib and writes the same WAV as a binaural render without the log.
+# --version map no libsndfile, FFTW, libmysofa, libsamplerate or zlib
+# (the list is every object the dynamic loader maps, dlopen included:
+# glibc's LD_DEBUG=files); the controls: a binaural render maps FFTW,
+# libmysofa and libsamplerate and writes the same WAV as a binaural
+# render without the log, and analyze of a WAV maps libsndfile.
 set -u
 fulgur=$1
 scene=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-lazy='libfftw3\.|libfftw3_threads|libmysofa|libsamplerate|libz\.'
+lazy='libsndfile|libfftw3\.|libfftw3_threads|libmysofa|libsamplerate|libz\.'
 
 # Runs "$@" with the loader's file log in $tmp/log; fails when it fails.
 mapped() {
@@ -37,3 +38,6 @@ done
 "$fulgur" render "$scene" --quiet --layout binaural -o "$tmp/c.wav" || exit 1
 cmp -s "$tmp/b.wav" "$tmp/c.wav" || { echo "the binaural renders differ"; exit 1; }
 echo "a binaural render opens FFTW, libmysofa and libsamplerate (the control)"
+mapped "$fulgur" analyze "$tmp/a.wav"
+grep libsndfile "$tmp/log" >/dev/null || { echo "the control failed: analyze, no libsndfile"; exit 1; }
+echo "analyze opens libsndfile (the control)"
