@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include <cmocka.h>
+#include <sndfile.h>
 
 #include "common/audio_file.h"
 
@@ -41,13 +42,13 @@ static void write_read(uint64_t max_frames, char magic[5], int expect_format)
     int fd = mkstemp(path);
     assert_true(fd >= 0);
     char err[256];
-    SNDFILE *wav = audio_wav_open(fd, path, 48000, 2, max_frames, err, sizeof err);
+    audio_wav *wav = audio_wav_open(fd, path, 48000, 2, max_frames, err, sizeof err);
     assert_non_null(wav);
     float frames[200];
     for (int i = 0; i < 200; i++)
         frames[i] = (float)i / 200;
-    assert_int_equal(sf_writef_float(wav, frames, 100), 100);
-    assert_int_equal(sf_close(wav), 0);
+    assert_int_equal(audio_wav_write(wav, frames, 100, err, sizeof err), 0);
+    assert_int_equal(audio_wav_close(wav), 0);
     close(fd);
     FILE *f = fopen(path, "rb");
     assert_non_null(f);
@@ -79,11 +80,76 @@ static void formats(void **state)
     assert_string_equal(magic, "RIFF");
 }
 
+/* The bytes of a file of `frames` frames of channels written by fill,
+ * into buf (size bytes at most); its length. */
+static size_t file_bytes(int (*fill)(int fd, uint32_t channels, const float *samples,
+                                     uint64_t frames),
+                         uint32_t channels, const float *samples, uint64_t frames,
+                         unsigned char *buf, size_t size)
+{
+    char path[] = "/tmp/fulgur-audio-XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    assert_int_equal(fill(fd, channels, samples, frames), 0);
+    close(fd);
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    size_t n = fread(buf, 1, size, f);
+    assert_true(n < size);
+    fclose(f);
+    unlink(path);
+    return n;
+}
+
+static int write_here(int fd, uint32_t channels, const float *samples, uint64_t frames)
+{
+    char err[256];
+    audio_wav *wav = audio_wav_open(fd, "here", 44100, channels, frames, err, sizeof err);
+    if (!wav || audio_wav_write(wav, samples, frames, err, sizeof err) != 0)
+        return -1;
+    return audio_wav_close(wav);
+}
+
+/* libsndfile's WAV as audio_wav_open set it up before it wrote plain
+ * WAVs itself */
+static int write_libsndfile(int fd, uint32_t channels, const float *samples, uint64_t frames)
+{
+    SF_INFO info = {
+        .samplerate = 44100, .channels = (int)channels, .format = SF_FORMAT_WAV | SF_FORMAT_FLOAT};
+    SNDFILE *wav = sf_open_fd(fd, SFM_WRITE, &info, SF_FALSE);
+    if (!wav)
+        return -1;
+    sf_command(wav, SFC_SET_ADD_PEAK_CHUNK, NULL, SF_FALSE);
+    sf_count_t n = sf_writef_float(wav, samples, (sf_count_t)frames);
+    return sf_close(wav) == 0 && n == (sf_count_t)frames ? 0 : -1;
+}
+
+/* A plain WAV written here is byte for byte libsndfile's, for 1, 2 and 16
+ * channels (the PAD chunk grows with them) and for no frames at all. */
+static void plain_as_libsndfile(void **state)
+{
+    (void)state;
+    static float samples[16 * 300];
+    static unsigned char here[32768], theirs[32768];
+    for (size_t i = 0; i < sizeof samples / sizeof samples[0]; i++)
+        samples[i] = (float)i / 4800 - 0.5f;
+    const uint32_t channels[] = {1, 2, 16};
+    for (int c = 0; c < 3; c++)
+        for (uint64_t frames = 0; frames <= 300; frames += 300) {
+            size_t n = file_bytes(write_here, channels[c], samples, frames, here, sizeof here);
+            size_t m =
+                file_bytes(write_libsndfile, channels[c], samples, frames, theirs, sizeof theirs);
+            assert_int_equal(n, m);
+            assert_memory_equal(here, theirs, n);
+        }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(threshold),
         cmocka_unit_test(formats),
+        cmocka_unit_test(plain_as_libsndfile),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -182,11 +182,12 @@ static void explain(fg_result r, const fg_flame_sim_config *c)
 static int write_sound(temp_file *t, const float *audio, size_t frames, double rate,
                        char *err, size_t err_size)
 {
-    SNDFILE *wav = audio_wav_open(t->fd, t->path, rate, 1, frames, err, err_size);
+    audio_wav *wav = audio_wav_open(t->fd, t->path, rate, 1, frames, err, err_size);
     if (!wav)
         return -1;
-    int ok = sf_writef_float(wav, audio, (sf_count_t)frames) == (sf_count_t)frames;
-    ok &= sf_close(wav) == 0;
+    char why[256];
+    int ok = audio_wav_write(wav, audio, frames, why, sizeof why) == 0;
+    ok &= audio_wav_close(wav) == 0;
     if (!ok)
         snprintf(err, err_size, "%s: could not write the sound", t->path);
     return ok ? 0 : -1;

@@ -2,7 +2,6 @@
  * the loop libfulgur-scene shares), each into a 32-bit float WAV. */
 #define _POSIX_C_SOURCE 200809L /* fileno */
 #include <math.h>
-#include <sndfile.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -78,7 +77,7 @@ typedef struct render_level {
 /* What the sink writes a scene's blocks into. */
 typedef struct wav_sink {
     const scene *s;
-    SNDFILE *wav;          /* NULL: a pass that only measures the peak */
+    audio_wav *wav;        /* NULL: a pass that only measures the peak */
     float scale;           /* a sample = pascals x scale */
     const char *path;
     float *interleaved;    /* capacity frames; the first `buffered` await writing */
@@ -107,12 +106,10 @@ static uint32_t sink_capacity(const scene *s)
 /* Writes the gathered frames; FG_ERR_IO with a message when it fails. */
 static fg_result flush_sink(wav_sink *w, char *err, size_t err_size)
 {
-    sf_count_t n = w->buffered;
+    uint64_t n = w->buffered;
     w->buffered = 0;
-    if (w->wav && n > 0 && sf_writef_float(w->wav, w->interleaved, n) != n) {
-        snprintf(err, err_size, "writing the WAV: %s", sf_strerror(w->wav));
+    if (w->wav && n > 0 && audio_wav_write(w->wav, w->interleaved, n, err, err_size) != 0)
         return FG_ERR_IO;
-    }
     return FG_OK;
 }
 
@@ -251,13 +248,13 @@ static int level_scale(const scene *s, const render_level *level, float *scale, 
 
 /* A file at a level other than pascals says which (common/calibration.h);
  * one in pascals stays byte for byte what it always was. */
-static SNDFILE *open_wav(const temp_file *out, const scene *s, float scale, char *err,
-                         size_t err_size)
+static audio_wav *open_wav(const temp_file *out, const scene *s, float scale, char *err,
+                           size_t err_size)
 {
-    SNDFILE *wav = audio_wav_open(out->fd, out->path, s->sample_rate_hz, s->channels,
+    audio_wav *wav = audio_wav_open(out->fd, out->path, s->sample_rate_hz, s->channels,
                                   scene_frame_limit(s), err, err_size);
     if (wav && scale != 1.0f && calibration_write(wav, 1.0 / scale, err, err_size) != 0) {
-        sf_close(wav);
+        audio_wav_close(wav);
         return NULL;
     }
     return wav;
@@ -322,7 +319,7 @@ static int render_file(const scene *s, const char *out_path, const render_level 
     int ok = w.wav && scene_render(s, &sink, &rep, err, sizeof err) == FG_OK &&
              flush_sink(&w, err, sizeof err) == FG_OK;
     progress_clear(line);
-    if (w.wav && sf_close(w.wav) != 0 && ok) {
+    if (w.wav && audio_wav_close(w.wav) != 0 && ok) {
         snprintf(err, sizeof err, "%s: closing the WAV failed", out_path);
         ok = 0;
     }

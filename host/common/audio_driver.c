@@ -77,7 +77,7 @@ int audio_driver_start(audio_driver *d, const audio_output *out, double rate_hz,
     }
     /* not in pascals: the file says what full scale is */
     if (gain != 1.0f && calibration_write(d->wav, 1.0 / gain, err, err_size) != 0) {
-        sf_close(d->wav);
+        audio_wav_close(d->wav);
         temp_file_abort(&d->file);
         goto fail;
     }
@@ -107,11 +107,7 @@ int audio_driver_write(audio_driver *d, float *const *planes, uint32_t frames, c
         }
         return 0;
     }
-    if (sf_writef_float(d->wav, d->interleaved, frames) != frames) {
-        snprintf(err, err_size, "writing the WAV: %s", sf_strerror(d->wav));
-        return -1;
-    }
-    return 0;
+    return audio_wav_write(d->wav, d->interleaved, frames, err, err_size);
 }
 
 int audio_driver_stop(audio_driver *d, bool keep, char *err, size_t err_size)
@@ -122,7 +118,7 @@ int audio_driver_stop(audio_driver *d, bool keep, char *err, size_t err_size)
         rc = -1;
     }
     if (d->kind == AUDIO_DRIVER_WAV) {
-        if (sf_close(d->wav) != 0 && keep) {
+        if (audio_wav_close(d->wav) != 0 && keep) {
             snprintf(err, err_size, "%s: closing the WAV failed", d->file.path);
             keep = false;
             rc = -1;

@@ -1,7 +1,7 @@
 /* The audio drivers of fulgur run and fulgur view: where the rendered
  * blocks go.
  *   null    nowhere; the audio thread paces itself like a sound card
- *   wav     a 32-bit float WAV through libsndfile (audio_file.h), written
+ *   wav     a 32-bit float WAV (audio_file.h), written
  *           under a temporary name and renamed when the run ends well
  *   raw     interleaved float32, native byte order, to stdout:
  *           fulgur run SCENE --audio raw:- | aplay -f FLOAT_LE -c2 -r48000
@@ -12,7 +12,6 @@
 #ifndef HOST_COMMON_AUDIO_DRIVER_H
 #define HOST_COMMON_AUDIO_DRIVER_H
 
-#include <sndfile.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -36,7 +35,7 @@ typedef struct audio_driver {
     float gain;
     float *interleaved; /* one block */
     temp_file file;     /* wav */
-    SNDFILE *wav;
+    audio_wav *wav;
 } audio_driver;
 
 /* Where a command's sound goes: the --audio of run and view. */

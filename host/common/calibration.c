@@ -8,12 +8,12 @@
 
 static const char prefix[] = "fulgur calibration: full scale = ";
 
-int calibration_write(SNDFILE *wav, double full_scale_pa, char *err, size_t err_size)
+int calibration_write(audio_wav *wav, double full_scale_pa, char *err, size_t err_size)
 {
-    char text[96];
+    char text[96], why[256];
     snprintf(text, sizeof text, "%s%.9g Pa", prefix, full_scale_pa);
-    if (sf_set_string(wav, SF_STR_COMMENT, text) != 0) {
-        snprintf(err, err_size, "writing the calibration into the WAV: %s", sf_strerror(wav));
+    if (audio_wav_comment(wav, text, why, sizeof why) != 0) {
+        snprintf(err, err_size, "writing the calibration into the WAV: %s", why);
         return -1;
     }
     return 0;

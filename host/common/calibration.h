@@ -15,13 +15,16 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+#include "audio_file.h"
+
 /* The full scale of a file that carries no calibration. */
 #define CALIBRATION_DEFAULT_PA 1.0
 
-/* Writes the calibration into wav (open for writing, before it is closed).
+/* Writes the calibration into wav (open for writing, before its first
+ * samples): the file is then libsndfile's (audio_wav_comment).
  * full_scale_pa must be finite and > 0. Returns 0, or -1 with libsndfile's
  * message in err. [main-thread] */
-int calibration_write(SNDFILE *wav, double full_scale_pa, char *err, size_t err_size);
+int calibration_write(audio_wav *wav, double full_scale_pa, char *err, size_t err_size);
 
 /* The calibration of wav (open for reading): true with *full_scale_pa set,
  * or false when the file carries none (*full_scale_pa is then

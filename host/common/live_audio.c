@@ -1,6 +1,5 @@
 /* The live device's common part: the backend table, loading a backend's
  * library, chunking, queries. */
-#include <dlfcn.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -40,20 +39,12 @@ live_result live_audio_open(const live_config *config, live_audio **out, char *e
 }
 
 void *live_library_load(const char *driver, const char *library, const char *package,
-                        const live_symbol *symbols, size_t count, char *err, size_t err_size)
+                        const library_symbol *symbols, size_t count, char *err, size_t err_size)
 {
-    void *lib = dlopen(library, RTLD_NOW | RTLD_LOCAL);
-    if (!lib) {
-        snprintf(err, err_size, "--audio %s: cannot load %s (Debian: %s): %s", driver, library,
-                 package, dlerror());
-        return NULL;
-    }
-    for (size_t i = 0; i < count; i++)
-        if (!(*symbols[i].slot = dlsym(lib, symbols[i].name))) {
-            snprintf(err, err_size, "--audio %s: %s has no %s", driver, library, symbols[i].name);
-            dlclose(lib);
-            return NULL;
-        }
+    char why[512];
+    void *lib = library_load(library, symbols, count, why, sizeof why);
+    if (!lib)
+        snprintf(err, err_size, "--audio %s: %s (Debian: %s)", driver, why, package);
     return lib;
 }
 

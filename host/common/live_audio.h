@@ -27,6 +27,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "library_load.h"
+
 typedef enum live_kind { LIVE_JACK, LIVE_PORTAUDIO } live_kind;
 
 /* Fills planes[ch][0..frames) for ch < channels. [audio-thread] */
@@ -105,19 +107,11 @@ struct live_audio {
     char description[160];
 };
 
-/* One function a backend takes from its library: its name, and where its
- * address goes (POSIX lets dlsym's object pointer stand for a function). */
-typedef struct live_symbol {
-    const char *name;
-    void **slot;
-} live_symbol;
-#define LIVE_SYMBOL(field, function) {#function, (void **)&(field)}
-
-/* dlopens library (RTLD_LOCAL) and resolves the count symbols. Returns its
- * handle, or NULL with a message naming --audio driver and the Debian
+/* dlopens library and resolves the count symbols (library_load). Returns
+ * its handle, or NULL with a message naming --audio driver and the Debian
  * package that installs the library (nothing left open). [main-thread] */
 void *live_library_load(const char *driver, const char *library, const char *package,
-                        const live_symbol *symbols, size_t count, char *err, size_t err_size);
+                        const library_symbol *symbols, size_t count, char *err, size_t err_size);
 
 /* Calls config.process over frames in chunks of at most max_chunk_frames,
  * planes advanced for each. [audio-thread] */

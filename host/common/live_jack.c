@@ -42,24 +42,24 @@ typedef struct jack_state {
 
 static int load(jack_api *api, char *err, size_t err_size)
 {
-    const live_symbol symbols[] = {
-        LIVE_SYMBOL(api->client_open, jack_client_open),
-        LIVE_SYMBOL(api->client_close, jack_client_close),
-        LIVE_SYMBOL(api->get_sample_rate, jack_get_sample_rate),
-        LIVE_SYMBOL(api->get_buffer_size, jack_get_buffer_size),
-        LIVE_SYMBOL(api->port_register, jack_port_register),
-        LIVE_SYMBOL(api->port_get_buffer, jack_port_get_buffer),
-        LIVE_SYMBOL(api->port_name, jack_port_name),
-        LIVE_SYMBOL(api->set_process_callback, jack_set_process_callback),
-        LIVE_SYMBOL(api->set_xrun_callback, jack_set_xrun_callback),
-        LIVE_SYMBOL(api->on_shutdown, jack_on_shutdown),
-        LIVE_SYMBOL(api->activate, jack_activate),
-        LIVE_SYMBOL(api->deactivate, jack_deactivate),
-        LIVE_SYMBOL(api->get_ports, jack_get_ports),
-        LIVE_SYMBOL(api->connect, jack_connect),
-        LIVE_SYMBOL(api->free, jack_free),
-        LIVE_SYMBOL(api->set_error_function, jack_set_error_function),
-        LIVE_SYMBOL(api->set_info_function, jack_set_info_function),
+    const library_symbol symbols[] = {
+        LIBRARY_SYMBOL(api->client_open, jack_client_open),
+        LIBRARY_SYMBOL(api->client_close, jack_client_close),
+        LIBRARY_SYMBOL(api->get_sample_rate, jack_get_sample_rate),
+        LIBRARY_SYMBOL(api->get_buffer_size, jack_get_buffer_size),
+        LIBRARY_SYMBOL(api->port_register, jack_port_register),
+        LIBRARY_SYMBOL(api->port_get_buffer, jack_port_get_buffer),
+        LIBRARY_SYMBOL(api->port_name, jack_port_name),
+        LIBRARY_SYMBOL(api->set_process_callback, jack_set_process_callback),
+        LIBRARY_SYMBOL(api->set_xrun_callback, jack_set_xrun_callback),
+        LIBRARY_SYMBOL(api->on_shutdown, jack_on_shutdown),
+        LIBRARY_SYMBOL(api->activate, jack_activate),
+        LIBRARY_SYMBOL(api->deactivate, jack_deactivate),
+        LIBRARY_SYMBOL(api->get_ports, jack_get_ports),
+        LIBRARY_SYMBOL(api->connect, jack_connect),
+        LIBRARY_SYMBOL(api->free, jack_free),
+        LIBRARY_SYMBOL(api->set_error_function, jack_set_error_function),
+        LIBRARY_SYMBOL(api->set_info_function, jack_set_info_function),
     };
     api->lib = live_library_load("jack", JACK_LIBRARY, "libjack-jackd2-0", symbols,
                                  sizeof symbols / sizeof symbols[0], err, err_size);

@@ -35,18 +35,18 @@ typedef struct pa_state {
 
 static int load(pa_api *api, char *err, size_t err_size)
 {
-    const live_symbol symbols[] = {
-        LIVE_SYMBOL(api->initialize, Pa_Initialize),
-        LIVE_SYMBOL(api->terminate, Pa_Terminate),
-        LIVE_SYMBOL(api->error_text, Pa_GetErrorText),
-        LIVE_SYMBOL(api->device_count, Pa_GetDeviceCount),
-        LIVE_SYMBOL(api->device_info, Pa_GetDeviceInfo),
-        LIVE_SYMBOL(api->default_output, Pa_GetDefaultOutputDevice),
-        LIVE_SYMBOL(api->host_api_info, Pa_GetHostApiInfo),
-        LIVE_SYMBOL(api->open_stream, Pa_OpenStream),
-        LIVE_SYMBOL(api->start_stream, Pa_StartStream),
-        LIVE_SYMBOL(api->stop_stream, Pa_StopStream),
-        LIVE_SYMBOL(api->close_stream, Pa_CloseStream),
+    const library_symbol symbols[] = {
+        LIBRARY_SYMBOL(api->initialize, Pa_Initialize),
+        LIBRARY_SYMBOL(api->terminate, Pa_Terminate),
+        LIBRARY_SYMBOL(api->error_text, Pa_GetErrorText),
+        LIBRARY_SYMBOL(api->device_count, Pa_GetDeviceCount),
+        LIBRARY_SYMBOL(api->device_info, Pa_GetDeviceInfo),
+        LIBRARY_SYMBOL(api->default_output, Pa_GetDefaultOutputDevice),
+        LIBRARY_SYMBOL(api->host_api_info, Pa_GetHostApiInfo),
+        LIBRARY_SYMBOL(api->open_stream, Pa_OpenStream),
+        LIBRARY_SYMBOL(api->start_stream, Pa_StartStream),
+        LIBRARY_SYMBOL(api->stop_stream, Pa_StopStream),
+        LIBRARY_SYMBOL(api->close_stream, Pa_CloseStream),
     };
     api->lib = live_library_load("portaudio", PORTAUDIO_LIBRARY, "libportaudio2", symbols,
                                  sizeof symbols / sizeof symbols[0], err, err_size);

@@ -1,14 +1,7 @@
-/* Ranges of numbers: the test and the wording. */
-#include <math.h>
+/* Ranges of numbers: the wording (the test is inline in the header). */
 #include <stdio.h>
 
 #include "number_range.h"
-
-bool number_range_holds(number_range r, double v)
-{
-    return isfinite(v) && (!r.integer || v == floor(v)) && v >= r.lo && v <= r.hi &&
-           !(r.lo_open && v == r.lo) && !(r.hi_open && v == r.hi);
-}
 
 void number_range_format(number_range r, char *buf, size_t size)
 {

@@ -3,6 +3,7 @@
 #ifndef HOST_COMMON_NUMBER_RANGE_H
 #define HOST_COMMON_NUMBER_RANGE_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -12,8 +13,14 @@ typedef struct number_range {
     bool integer;
 } number_range;
 
-/* Whether v is finite, inside r and, when r.integer, whole. */
-bool number_range_holds(number_range r, double v);
+/* Whether v is finite, inside r and, when r.integer, whole. Inline: the
+ * streaming nodes reader asks it of every number of a tree (five calls a
+ * node, 1.7 % of a 10^6-segment render as a call). */
+static inline bool number_range_holds(number_range r, double v)
+{
+    return isfinite(v) && (!r.integer || v == floor(v)) && v >= r.lo && v <= r.hi &&
+           !(r.lo_open && v == r.lo) && !(r.hi_open && v == r.hi);
+}
 
 /* r for messages: "1..4096" when both ends are closed, "(0, 3600]" and the
  * like when one is open, "(-inf, inf)" for the unbounded range. Always

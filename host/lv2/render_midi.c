@@ -3,7 +3,6 @@
  * ~/.lv2 and the system's lib/lv2) and driven block by block; its worker
  * runs between blocks, as LV2 allows an offline host to. */
 #include <math.h>
-#include <sndfile.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -150,7 +149,7 @@ static uint64_t render_frames(const smf_event *ev, size_t count, double rate_hz,
 
 /* Plays the events block by block into wav. */
 static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz, double tail_s,
-                  SNDFILE *wav)
+                  audio_wav *wav)
 {
     uint64_t frames = render_frames(ev, count, rate_hz, tail_s), next = 0;
     unsigned channels = lv2_host_channels(h);
@@ -172,8 +171,9 @@ static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz
         lv2_host_run_planes(h, n, planes);
         lv2_host_work(h);
         audio_interleave(planes, channels, n, 1, frame);
-        if (sf_writef_float(wav, frame, n) != n) {
-            fprintf(stderr, "fulgur-lv2-render: writing: %s\n", sf_strerror(wav));
+        char err[256];
+        if (audio_wav_write(wav, frame, n, err, sizeof err) != 0) {
+            fprintf(stderr, "fulgur-lv2-render: %s\n", err);
             return -1;
         }
     }
@@ -224,13 +224,13 @@ int main(int argc, char **argv)
         free(events);
         return 1;
     }
-    SNDFILE *wav = audio_wav_open(out.fd, o.out, o.rate_hz, lv2_host_channels(h),
-                                  render_frames(events, count, o.rate_hz, o.tail_s), err,
-                                  sizeof err);
+    audio_wav *wav = audio_wav_open(out.fd, o.out, o.rate_hz, lv2_host_channels(h),
+                                    render_frames(events, count, o.rate_hz, o.tail_s), err,
+                                    sizeof err);
     int ok = wav && render(h, events, count, o.rate_hz, o.tail_s, wav) == 0;
     if (!wav)
         fprintf(stderr, "fulgur-lv2-render: %s\n", err);
-    if (wav && sf_close(wav) != 0 && ok) {
+    if (wav && audio_wav_close(wav) != 0 && ok) {
         fprintf(stderr, "fulgur-lv2-render: %s: closing the WAV failed\n", o.out);
         ok = 0;
     }

@@ -229,14 +229,15 @@ fg_result fgs_wav_write(const char *path, const float *samples, uint64_t frames,
     temp_file out;
     if (temp_file_open(&out, path, msg, msg_size) != 0)
         return FG_ERR_IO;
-    SNDFILE *wav = audio_wav_open(out.fd, path, sample_rate_hz, channels, frames, msg,
-                                  msg_size);
+    audio_wav *wav = audio_wav_open(out.fd, path, sample_rate_hz, channels, frames, msg,
+                                    msg_size);
     int ok = wav != NULL;
-    if (ok && sf_writef_float(wav, samples, (sf_count_t)frames) != (sf_count_t)frames) {
-        snprintf(msg, msg_size, "%s: writing the WAV: %s", path, sf_strerror(wav));
+    char why[256];
+    if (ok && audio_wav_write(wav, samples, frames, why, sizeof why) != 0) {
+        snprintf(msg, msg_size, "%s: %s", path, why);
         ok = 0;
     }
-    if (wav && sf_close(wav) != 0 && ok) {
+    if (wav && audio_wav_close(wav) != 0 && ok) {
         snprintf(msg, msg_size, "%s: closing the WAV failed", path);
         ok = 0;
     }
