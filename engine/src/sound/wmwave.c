@@ -118,6 +118,27 @@ static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
     return finite;
 }
 
+/* The state, samples -3 .. -1, as eval_range(e, -3, -1, y) gives it, bit
+ * for bit. A wave sounding through the block's start is evaluated there in
+ * every block it spans, a long one mostly in its linear middle piece: when
+ * the four edges (ascending) lie in it, where fg_wm_pressure is -4 B tau
+ * (0 when s >= psi; inner < outer keeps it off the outer breakpoint), each
+ * sample's average is that at its midpoint (sample_average's piece 2). */
+static bool eval_state(const fg_wm_event *e, double y[3])
+{
+    const fg_wm_shape *w = &e->shape;
+    const double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    double edge[4];
+    for (int j = 0; j < 4; j++)
+        edge[j] = ((double)(j - 3) - 0.5 - e->center) / e->width;
+    if (!(edge[0] > -inner && edge[3] <= inner && inner < outer))
+        return eval_range(e, -3, -1, y);
+    const double slope = w->s < w->psi ? -4.0 * w->b : 0.0;
+    for (int j = 0; j < 3; j++)
+        y[j] = slope * (0.5 * (edge[j] + edge[j + 1])) + 0.0;
+    return isfinite(y[0]) && isfinite(y[1]) && isfinite(y[2]);
+}
+
 /* Adds the range eval_range gave: state for k < 0, third differences for
  * k >= lo + 3 (earlier ones in the range lie on one quadratic piece and
  * have none). */
@@ -255,7 +276,7 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
         breakpoint_taps bp[4];
         t->closed_form = true;
         t->state = first < 0;
-        if ((t->state && !eval_range(e, -3, -1, t->y[0])) ||
+        if ((t->state && !eval_state(e, t->y[0])) ||
             !eval_breakpoints(e, n, bp, &t->count))
             return FG_WAVE_NON_FINITE;
         for (int i = 0; i < t->count; i++) {
