@@ -218,15 +218,18 @@ static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4],
     const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, wd = e->width;
     double inner = fabs(psi - s), outer = psi + s;
-    /* in ascending tau: where, and the signs of the jumps of p' (k1) and
-     * p'' (k2) there */
+    /* in ascending tau: where, and the signs of the jumps of p' and p''
+     * there */
     const double taus[4] = {-outer, -inner, inner, outer};
     const double jump1[4] = {1.0, s < psi ? -1.0 : 1.0, s < psi ? 1.0 : -1.0, -1.0};
     const double jump2[4] = {-1.0, 1.0, 1.0, -1.0};
     const bool moderate = fabs(w->b) <= TAP_MODERATE && psi <= TAP_MODERATE &&
                           s >= 1.0 / TAP_MODERATE && wd <= TAP_MODERATE &&
                           wd >= 1.0 / TAP_MODERATE;
-    double k1 = 0.0, k2 = 0.0;
+    /* the jumps' sizes in samples, 2 B psi / s and 2 B / s per tau, divided
+     * once for every breakpoint: a sign times a quotient is exactly the
+     * quotient of the sign times the dividend */
+    double a1 = 0.0, a2 = 0.0;
     bool finite = true;
     *count = 0;
     for (int i = 0; i < 4; i++) {
@@ -234,12 +237,10 @@ static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4],
         if (moderate && !breakpoint_in_block(fg_wm_sample_at(x), n))
             continue;
         if (*count == 0) {
-            k1 = 2.0 * w->b * psi / s;
-            k2 = 2.0 * w->b / s;
+            a1 = 2.0 * w->b * psi / s / wd;
+            a2 = 0.5 * (2.0 * w->b / s) / (wd * wd);
         }
-        finite = breakpoint(x, 0.0, jump1[i] * k1 / wd, 0.5 * (jump2[i] * k2) / (wd * wd),
-                            &t[(*count)++]) &&
-                 finite;
+        finite = breakpoint(x, 0.0, jump1[i] * a1, jump2[i] * a2, &t[(*count)++]) && finite;
     }
     return finite;
 }
