@@ -69,6 +69,18 @@ static int piece(double inner, double outer, double tau)
     return tau <= -outer ? 0 : tau <= -inner ? 1 : tau <= inner ? 2 : tau <= outer ? 3 : 4;
 }
 
+/* The average over a sample from tau = a to z in the middle piece, -inner
+ * < a <= z <= inner, given slope = -4 B (0 when s >= psi): fg_wm_pressure
+ * at its midpoint bit for bit, slope tau there but 0 on the outer
+ * breakpoint (which inner equals when s is below psi's rounding, or where
+ * the midpoint overflows). The piece is linear: its curvature term, 0 h h
+ * / 24 with h = z - a >= 0, is +0. */
+static double middle_average(double slope, double outer, double a, double z)
+{
+    double mid = 0.5 * (a + z);
+    return (fabs(mid) < outer ? slope * mid : 0.0) + 0.0;
+}
+
 /* The average over the sample from tau = a (in piece pa) to z (in pz),
  * accurate to rounding of the peak. A difference of P at the two edges
  * loses digits when the wave spans many samples (P is ~ psi times the
@@ -76,7 +88,8 @@ static int piece(double inner, double outer, double tau)
  * extrapolates those errors quadratically across the block. So inside one
  * piece the average of the quadratic is taken directly: p(mid) + p'' h^2
  * / 24, h = 1/width; across a breakpoint, the P difference (that sample's
- * error is not extrapolated: the samples after it are). */
+ * error is not extrapolated: the samples after it are). The middle piece
+ * (2) is middle_average's. */
 static double sample_average(const fg_wm_event *e, double a, double z, int pa, int pz)
 {
     const fg_wm_shape *w = &e->shape;
@@ -84,10 +97,6 @@ static double sample_average(const fg_wm_event *e, double a, double z, int pa, i
         return e->width * (fg_wm_integral(w, z) - fg_wm_integral(w, a));
     if (pa == 0 || pa == 4)
         return 0.0;
-    /* the middle piece is linear: its curvature term, 0 h h / 24 with h =
-     * z - a >= 0, is +0 */
-    if (pa == 2)
-        return fg_wm_pressure(w, 0.5 * (a + z)) + 0.0;
     double h = z - a;
     double curvature = pa == 1 ? -2.0 * w->b / w->s : 2.0 * w->b / w->s;
     return fg_wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
@@ -104,13 +113,15 @@ static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
 {
     const fg_wm_shape *w = &e->shape;
     const double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    const double slope = w->s < w->psi ? -4.0 * w->b : 0.0;
     double a = ((double)lo - 0.5 - e->center) / e->width;
     int pa = piece(inner, outer, a);
     bool finite = true;
     for (long k = lo; k <= hi; k++) {
         double z = ((double)k + 0.5 - e->center) / e->width;
         int pz = piece(inner, outer, z);
-        y[k - lo] = sample_average(e, a, z, pa, pz);
+        y[k - lo] = pa == 2 && pz == 2 ? middle_average(slope, outer, a, z)
+                                       : sample_average(e, a, z, pa, pz);
         finite = finite && isfinite(y[k - lo]);
         a = z;
         pa = pz;
@@ -120,10 +131,9 @@ static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
 
 /* The state, samples -3 .. -1, as eval_range(e, -3, -1, y) gives it, bit
  * for bit. A wave sounding through the block's start is evaluated there in
- * every block it spans, a long one mostly in its linear middle piece: when
- * the four edges (ascending) lie in it, where fg_wm_pressure is -4 B tau
- * (0 when s >= psi; inner < outer keeps it off the outer breakpoint), each
- * sample's average is that at its midpoint (sample_average's piece 2). */
+ * every block it spans, a long one mostly in its middle piece: when the
+ * four edges (ascending) lie in it, each sample is its middle_average,
+ * without placing each edge. */
 static bool eval_state(const fg_wm_event *e, double y[3])
 {
     const fg_wm_shape *w = &e->shape;
@@ -131,11 +141,11 @@ static bool eval_state(const fg_wm_event *e, double y[3])
     double edge[4];
     for (int j = 0; j < 4; j++)
         edge[j] = ((double)(j - 3) - 0.5 - e->center) / e->width;
-    if (!(edge[0] > -inner && edge[3] <= inner && inner < outer))
+    if (!(edge[0] > -inner && edge[3] <= inner))
         return eval_range(e, -3, -1, y);
     const double slope = w->s < w->psi ? -4.0 * w->b : 0.0;
     for (int j = 0; j < 3; j++)
-        y[j] = slope * (0.5 * (edge[j] + edge[j + 1])) + 0.0;
+        y[j] = middle_average(slope, outer, edge[j], edge[j + 1]);
     return isfinite(y[0]) && isfinite(y[1]) && isfinite(y[2]);
 }
 
@@ -314,7 +324,8 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
     }
     t->count = ranges;
     for (int r = 0; r < ranges; r++)
-        if (!eval_range(e, t->lo[r], t->hi[r], t->y[r]))
+        if (!(t->lo[r] == -3 && t->hi[r] == -1 ? eval_state(e, t->y[r])
+                                               : eval_range(e, t->lo[r], t->hi[r], t->y[r])))
             return FG_WAVE_NON_FINITE;
     return FG_WAVE_SOUNDING;
 }
