@@ -172,10 +172,10 @@ typedef struct breakpoint_taps {
     double taps[4];  /* its third differences at m .. m + 3 */
 } breakpoint_taps;
 
-/* The taps of one breakpoint; false when they are not finite. */
-static bool breakpoint(double x, double a0, double a1, double a2, breakpoint_taps *t)
+/* The taps of one breakpoint at x, in sample m; false when they are not
+ * finite. */
+static bool breakpoint(double x, long m, double a0, double a1, double a2, breakpoint_taps *t)
 {
-    long m = fg_wm_sample_at(x);
     double f = (double)m + 0.5 - x, g[4];
     for (int j = 0; j < 4; j++) {
         double u = j + f;
@@ -185,6 +185,14 @@ static bool breakpoint(double x, double a0, double a1, double a2, breakpoint_tap
                                g[3] - 4.0 * g[2] + 6.0 * g[1] - 4.0 * g[0]}};
     return isfinite(t->taps[0]) && isfinite(t->taps[1]) && isfinite(t->taps[2]) &&
            isfinite(t->taps[3]);
+}
+
+/* The sample holding a wave's breakpoint i (0 .. 3, ascending) at x =
+ * centre + tau_i width: the outer two are its span's ends first and last
+ * (fg_wm_event_span: the same sums), the inner two are placed. */
+static long breakpoint_sample(double x, int i, long first, long last)
+{
+    return i == 0 ? first : i == 3 ? last : fg_wm_sample_at(x);
 }
 
 /* Whether a breakpoint in sample m changes the third differences of a
@@ -218,12 +226,14 @@ static void add_breakpoint(fg_accum *b, long m, const double *taps, double gain)
  * 2^36 times it. */
 #define TAP_MODERATE 1e100
 
-/* The taps of the breakpoints into t[0 .. *count); false when one is not
- * finite. When the wave's numbers are moderate (TAP_MODERATE), so that
- * every tap is finite, a breakpoint that falls outside the block of n,
- * which would add nothing (add_breakpoint), is left out: a wave sounding
- * through a block without a breakpoint in it costs its state alone. */
-static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4], int *count)
+/* The taps of the breakpoints of e, whose span is first .. last, into
+ * t[0 .. *count); false when one is not finite. When the wave's numbers
+ * are moderate (TAP_MODERATE), so that every tap is finite, a breakpoint
+ * that falls outside the block of n, which would add nothing
+ * (add_breakpoint), is left out: a wave sounding through a block without a
+ * breakpoint in it costs its state alone. */
+static bool eval_breakpoints(const fg_wm_event *e, long first, long last, long n,
+                             breakpoint_taps t[4], int *count)
 {
     const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, wd = e->width;
@@ -244,13 +254,14 @@ static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4],
     *count = 0;
     for (int i = 0; i < 4; i++) {
         double x = e->center + taus[i] * wd;
-        if (moderate && !breakpoint_in_block(fg_wm_sample_at(x), n))
+        long m = breakpoint_sample(x, i, first, last);
+        if (moderate && !breakpoint_in_block(m, n))
             continue;
         if (*count == 0) {
             a1 = 2.0 * w->b * psi / s / wd;
             a2 = 0.5 * (2.0 * w->b / s) / (wd * wd);
         }
-        finite = breakpoint(x, 0.0, jump1[i] * a1, jump2[i] * a2, &t[(*count)++]) && finite;
+        finite = breakpoint(x, m, 0.0, jump1[i] * a1, jump2[i] * a2, &t[(*count)++]) && finite;
     }
     return finite;
 }
@@ -288,7 +299,7 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
         t->closed_form = true;
         t->state = first < 0;
         if ((t->state && !eval_state(e, t->y[0])) ||
-            !eval_breakpoints(e, n, bp, &t->count))
+            !eval_breakpoints(e, first, last, n, bp, &t->count))
             return FG_WAVE_NON_FINITE;
         for (int i = 0; i < t->count; i++) {
             t->m[i] = bp[i].m;
@@ -308,7 +319,7 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
         ranges = 1;
     }
     for (int i = 0; i < 4; i++) {
-        long m = fg_wm_sample_at(e->center + taus[i] * e->width);
+        long m = breakpoint_sample(e->center + taus[i] * e->width, i, first, last);
         long a = m - 3 < -3 ? -3 : m - 3;
         long z = m + 3 > n - 1 ? n - 1 : m + 3;
         if (a > z)
