@@ -678,6 +678,53 @@ static void test_overflowing_taps_refused_mid_wave(void **state)
               ref[k]);
 }
 
+/* ---------------------------------------------------------------------------
+ * 8. The state of a wave in its middle piece (what a long wave adds in
+ * every block it sounds through) is the sample averages the exact ranges
+ * give, bit for bit: fg_wm_pressure at each sample's midpoint, + 0. Both
+ * ways a wave is added (closed form, exact ranges), a middle piece of 0
+ * (s >= psi), and s below psi's rounding (inner = outer = 2^53), where the
+ * state's last two midpoints fall on the outer breakpoint: 0 there. */
+typedef struct state_case {
+    const char *name;
+    fg_wm_event e;
+    bool closed_form;
+} state_case;
+
+static void test_state_in_the_middle(void **state)
+{
+    (void)state;
+    const state_case cases[] = {
+        {"closed form", {shape_of(1.0, 0.5, 10.0), 1.5, 100.0}, true},
+        {"s >= psi", {shape_of(1.0, 0.9, 0.3), 1.5, 100.0}, true},
+        {"exact ranges", {shape_of(1.0, 0.01, 10.0), 1.5, 100.0}, false},
+        {"s below rounding", {shape_of(1.0, 0.5, 0x1p53), -0x1p55, 4.0}, true},
+    };
+    for (size_t ci = 0; ci < sizeof cases / sizeof cases[0]; ci++) {
+        const state_case *c = &cases[ci];
+        const fg_wm_shape *w = &c->e.shape;
+        long first, last;
+        CHECK(fg_wm_event_in_range(&c->e), "%s: out of range", c->name);
+        fg_wm_event_span(&c->e, &first, &last);
+        fg_wm_taps t;
+        CHECK(fg_wm_taps_eval(&c->e, first, last, 64, &t) == FG_WAVE_SOUNDING,
+              "%s: not sounding", c->name);
+        CHECK(t.closed_form == c->closed_form, "%s: added the other way", c->name);
+        CHECK(c->closed_form ? t.state : t.lo[0] == -3 && t.hi[0] == -1,
+              "%s: no state of its own", c->name);
+        for (long k = -3; k <= -1; k++) {
+            double a = ((double)k - 0.5 - c->e.center) / c->e.width;
+            double z = ((double)k + 0.5 - c->e.center) / c->e.width;
+            CHECK(a > -fabs(w->psi - w->s) && z <= fabs(w->psi - w->s),
+                  "%s: sample %ld outside the middle piece", c->name, k);
+            double want = fg_wm_pressure(w, 0.5 * (a + z)) + 0.0;
+            CHECK(memcmp(&t.y[0][k + 3], &want, sizeof want) == 0,
+                  "%s: sample %ld is %.17g, the exact range's %.17g", c->name, k,
+                  t.y[0][k + 3], want);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -691,6 +738,7 @@ int main(void)
         cmocka_unit_test(test_block_no_drift),
         cmocka_unit_test(test_tiny_s),
         cmocka_unit_test(test_overflowing_taps_refused_mid_wave),
+        cmocka_unit_test(test_state_in_the_middle),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

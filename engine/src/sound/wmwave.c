@@ -69,6 +69,18 @@ static int piece(double inner, double outer, double tau)
     return tau <= -outer ? 0 : tau <= -inner ? 1 : tau <= inner ? 2 : tau <= outer ? 3 : 4;
 }
 
+/* The average over a sample from tau = a to z in the middle piece, -inner
+ * < a <= z <= inner, given slope = -4 B (0 when s >= psi): fg_wm_pressure
+ * at its midpoint bit for bit, slope tau there but 0 on the outer
+ * breakpoint (which inner equals when s is below psi's rounding, or where
+ * the midpoint overflows). The piece is linear: its curvature term, 0 h h
+ * / 24 with h = z - a >= 0, is +0. */
+static double middle_average(double slope, double outer, double a, double z)
+{
+    double mid = 0.5 * (a + z);
+    return (fabs(mid) < outer ? slope * mid : 0.0) + 0.0;
+}
+
 /* The average over the sample from tau = a (in piece pa) to z (in pz),
  * accurate to rounding of the peak. A difference of P at the two edges
  * loses digits when the wave spans many samples (P is ~ psi times the
@@ -76,7 +88,8 @@ static int piece(double inner, double outer, double tau)
  * extrapolates those errors quadratically across the block. So inside one
  * piece the average of the quadratic is taken directly: p(mid) + p'' h^2
  * / 24, h = 1/width; across a breakpoint, the P difference (that sample's
- * error is not extrapolated: the samples after it are). */
+ * error is not extrapolated: the samples after it are). The middle piece
+ * (2) is middle_average's. */
 static double sample_average(const fg_wm_event *e, double a, double z, int pa, int pz)
 {
     const fg_wm_shape *w = &e->shape;
@@ -84,10 +97,6 @@ static double sample_average(const fg_wm_event *e, double a, double z, int pa, i
         return e->width * (fg_wm_integral(w, z) - fg_wm_integral(w, a));
     if (pa == 0 || pa == 4)
         return 0.0;
-    /* the middle piece is linear: its curvature term, 0 h h / 24 with h =
-     * z - a >= 0, is +0 */
-    if (pa == 2)
-        return fg_wm_pressure(w, 0.5 * (a + z)) + 0.0;
     double h = z - a;
     double curvature = pa == 1 ? -2.0 * w->b / w->s : 2.0 * w->b / w->s;
     return fg_wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
@@ -104,18 +113,40 @@ static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
 {
     const fg_wm_shape *w = &e->shape;
     const double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    const double slope = w->s < w->psi ? -4.0 * w->b : 0.0;
     double a = ((double)lo - 0.5 - e->center) / e->width;
     int pa = piece(inner, outer, a);
     bool finite = true;
     for (long k = lo; k <= hi; k++) {
         double z = ((double)k + 0.5 - e->center) / e->width;
         int pz = piece(inner, outer, z);
-        y[k - lo] = sample_average(e, a, z, pa, pz);
+        y[k - lo] = pa == 2 && pz == 2 ? middle_average(slope, outer, a, z)
+                                       : sample_average(e, a, z, pa, pz);
         finite = finite && isfinite(y[k - lo]);
         a = z;
         pa = pz;
     }
     return finite;
+}
+
+/* The state, samples -3 .. -1, as eval_range(e, -3, -1, y) gives it, bit
+ * for bit. A wave sounding through the block's start is evaluated there in
+ * every block it spans, a long one mostly in its middle piece: when the
+ * four edges (ascending) lie in it, each sample is its middle_average,
+ * without placing each edge. */
+static bool eval_state(const fg_wm_event *e, double y[3])
+{
+    const fg_wm_shape *w = &e->shape;
+    const double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+    double edge[4];
+    for (int j = 0; j < 4; j++)
+        edge[j] = ((double)(j - 3) - 0.5 - e->center) / e->width;
+    if (!(edge[0] > -inner && edge[3] <= inner))
+        return eval_range(e, -3, -1, y);
+    const double slope = w->s < w->psi ? -4.0 * w->b : 0.0;
+    for (int j = 0; j < 3; j++)
+        y[j] = middle_average(slope, outer, edge[j], edge[j + 1]);
+    return isfinite(y[0]) && isfinite(y[1]) && isfinite(y[2]);
 }
 
 /* Adds the range eval_range gave: state for k < 0, third differences for
@@ -141,10 +172,10 @@ typedef struct breakpoint_taps {
     double taps[4];  /* its third differences at m .. m + 3 */
 } breakpoint_taps;
 
-/* The taps of one breakpoint; false when they are not finite. */
-static bool breakpoint(double x, double a0, double a1, double a2, breakpoint_taps *t)
+/* The taps of one breakpoint at x, in sample m; false when they are not
+ * finite. */
+static bool breakpoint(double x, long m, double a0, double a1, double a2, breakpoint_taps *t)
 {
-    long m = fg_wm_sample_at(x);
     double f = (double)m + 0.5 - x, g[4];
     for (int j = 0; j < 4; j++) {
         double u = j + f;
@@ -154,6 +185,14 @@ static bool breakpoint(double x, double a0, double a1, double a2, breakpoint_tap
                                g[3] - 4.0 * g[2] + 6.0 * g[1] - 4.0 * g[0]}};
     return isfinite(t->taps[0]) && isfinite(t->taps[1]) && isfinite(t->taps[2]) &&
            isfinite(t->taps[3]);
+}
+
+/* The sample holding a wave's breakpoint i (0 .. 3, ascending) at x =
+ * centre + tau_i width: the outer two are its span's ends first and last
+ * (fg_wm_event_span: the same sums), the inner two are placed. */
+static long breakpoint_sample(double x, int i, long first, long last)
+{
+    return i == 0 ? first : i == 3 ? last : fg_wm_sample_at(x);
 }
 
 /* Whether a breakpoint in sample m changes the third differences of a
@@ -187,38 +226,42 @@ static void add_breakpoint(fg_accum *b, long m, const double *taps, double gain)
  * 2^36 times it. */
 #define TAP_MODERATE 1e100
 
-/* The taps of the breakpoints into t[0 .. *count); false when one is not
- * finite. When the wave's numbers are moderate (TAP_MODERATE), so that
- * every tap is finite, a breakpoint that falls outside the block of n,
- * which would add nothing (add_breakpoint), is left out: a wave sounding
- * through a block without a breakpoint in it costs its state alone. */
-static bool eval_breakpoints(const fg_wm_event *e, long n, breakpoint_taps t[4], int *count)
+/* The taps of the breakpoints of e, whose span is first .. last, into
+ * t[0 .. *count); false when one is not finite. When the wave's numbers
+ * are moderate (TAP_MODERATE), so that every tap is finite, a breakpoint
+ * that falls outside the block of n, which would add nothing
+ * (add_breakpoint), is left out: a wave sounding through a block without a
+ * breakpoint in it costs its state alone. */
+static bool eval_breakpoints(const fg_wm_event *e, long first, long last, long n,
+                             breakpoint_taps t[4], int *count)
 {
     const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, wd = e->width;
     double inner = fabs(psi - s), outer = psi + s;
-    /* in ascending tau: where, and the signs of the jumps of p' (k1) and
-     * p'' (k2) there */
+    /* in ascending tau: where, and the signs of the jumps of p' and p''
+     * there */
     const double taus[4] = {-outer, -inner, inner, outer};
     const double jump1[4] = {1.0, s < psi ? -1.0 : 1.0, s < psi ? 1.0 : -1.0, -1.0};
     const double jump2[4] = {-1.0, 1.0, 1.0, -1.0};
     const bool moderate = fabs(w->b) <= TAP_MODERATE && psi <= TAP_MODERATE &&
                           s >= 1.0 / TAP_MODERATE && wd <= TAP_MODERATE &&
                           wd >= 1.0 / TAP_MODERATE;
-    double k1 = 0.0, k2 = 0.0;
+    /* the jumps' sizes in samples, 2 B psi / s and 2 B / s per tau, divided
+     * once for every breakpoint: a sign times a quotient is exactly the
+     * quotient of the sign times the dividend */
+    double a1 = 0.0, a2 = 0.0;
     bool finite = true;
     *count = 0;
     for (int i = 0; i < 4; i++) {
         double x = e->center + taus[i] * wd;
-        if (moderate && !breakpoint_in_block(fg_wm_sample_at(x), n))
+        long m = breakpoint_sample(x, i, first, last);
+        if (moderate && !breakpoint_in_block(m, n))
             continue;
         if (*count == 0) {
-            k1 = 2.0 * w->b * psi / s;
-            k2 = 2.0 * w->b / s;
+            a1 = 2.0 * w->b * psi / s / wd;
+            a2 = 0.5 * (2.0 * w->b / s) / (wd * wd);
         }
-        finite = breakpoint(x, 0.0, jump1[i] * k1 / wd, 0.5 * (jump2[i] * k2) / (wd * wd),
-                            &t[(*count)++]) &&
-                 finite;
+        finite = breakpoint(x, m, 0.0, jump1[i] * a1, jump2[i] * a2, &t[(*count)++]) && finite;
     }
     return finite;
 }
@@ -255,8 +298,8 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
         breakpoint_taps bp[4];
         t->closed_form = true;
         t->state = first < 0;
-        if ((t->state && !eval_range(e, -3, -1, t->y[0])) ||
-            !eval_breakpoints(e, n, bp, &t->count))
+        if ((t->state && !eval_state(e, t->y[0])) ||
+            !eval_breakpoints(e, first, last, n, bp, &t->count))
             return FG_WAVE_NON_FINITE;
         for (int i = 0; i < t->count; i++) {
             t->m[i] = bp[i].m;
@@ -276,7 +319,7 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
         ranges = 1;
     }
     for (int i = 0; i < 4; i++) {
-        long m = fg_wm_sample_at(e->center + taus[i] * e->width);
+        long m = breakpoint_sample(e->center + taus[i] * e->width, i, first, last);
         long a = m - 3 < -3 ? -3 : m - 3;
         long z = m + 3 > n - 1 ? n - 1 : m + 3;
         if (a > z)
@@ -292,7 +335,8 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
     }
     t->count = ranges;
     for (int r = 0; r < ranges; r++)
-        if (!eval_range(e, t->lo[r], t->hi[r], t->y[r]))
+        if (!(t->lo[r] == -3 && t->hi[r] == -1 ? eval_state(e, t->y[r])
+                                               : eval_range(e, t->lo[r], t->hi[r], t->y[r])))
             return FG_WAVE_NON_FINITE;
     return FG_WAVE_SOUNDING;
 }
