@@ -14,14 +14,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 lazy='libsndfile|libfftw3\.|libfftw3_threads|libmysofa|libsamplerate|libz\.'
 
-# Runs "$@" with the loader's file log in $tmp/log; fails when it fails.
-mapped() {
-    LD_DEBUG=files LD_DEBUG_OUTPUT="$tmp/ld" "$@" >/dev/null 2>"$tmp/err" ||
-        { cat "$tmp/err"; echo "failed: $*"; exit 1; }
-    cat "$tmp"/ld.* | grep 'file=' > "$tmp/log"
-    rm -f "$tmp"/ld.*
-    [ -s "$tmp/log" ] || { echo "LD_DEBUG logged nothing for: $*"; exit 1; }
-}
+. "$(dirname "$0")/loader_log.sh"
 for args in "render $scene -o $tmp/a.wav" --help --version; do
     mapped "$fulgur" $args
     if grep -E "$lazy" "$tmp/log" >/dev/null; then

@@ -16,14 +16,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 gl='libGL\.|libEGL|libOpenGL|libGLX|libglfw|libX11|libxcb|libepoxy|libOSMesa|libLLVM|libgbm|libdrm|libfreetype|libfontconfig|fulgur-gl\.so'
 
-# Runs "$@" with the loader's file log in $tmp/log; fails when it fails.
-mapped() {
-    LD_DEBUG=files LD_DEBUG_OUTPUT="$tmp/ld" "$@" >/dev/null 2>"$tmp/err" ||
-        { cat "$tmp/err"; echo "failed: $*"; exit 1; }
-    cat "$tmp"/ld.* > "$tmp/log"
-    rm -f "$tmp"/ld.*
-    grep -c 'file=' "$tmp/log" >/dev/null || { echo "LD_DEBUG logged nothing for: $*"; exit 1; }
-}
+. "$(dirname "$0")/loader_log.sh"
 check() {
     mapped "$@"
     if grep 'file=' "$tmp/log" | grep -E "$gl" >/dev/null; then
