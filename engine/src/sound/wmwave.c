@@ -219,11 +219,11 @@ static void add_breakpoint(fg_accum *b, long m, const double *taps, double gain)
 #define TAP_MODERATE 1e100
 
 /* The taps of the breakpoints of e, whose span is first .. last, into
- * t->m and t->taps [0 .. t->count); false when one is not finite. When the wave's numbers
- * are moderate (TAP_MODERATE), so that every tap is finite, a breakpoint
- * that falls outside the block of n, which would add nothing
- * (add_breakpoint), is left out: a wave sounding through a block without a
- * breakpoint in it costs its state alone. */
+ * t->m and t->taps [0 .. t->count); false when one is not finite. When
+ * the wave's numbers are moderate (TAP_MODERATE), so that every tap is
+ * finite, a breakpoint that falls outside the block of n, which would add
+ * nothing (add_breakpoint), is left out: a wave sounding through a block
+ * without a breakpoint in it costs its state alone. */
 static bool eval_breakpoints(const fg_wm_event *e, long first, long last, long n, fg_wm_taps *t)
 {
     const fg_wm_shape *w = &e->shape;
