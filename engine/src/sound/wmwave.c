@@ -13,7 +13,6 @@
  *   x < s - psi (s >= psi):   P = 4 B psi^3 / (3s)
  * s -> 0 needs no special case: the cubic shell is then empty. */
 #include <math.h>
-#include <string.h>
 
 #include "wmwave_internal.h"
 
@@ -154,37 +153,30 @@ static bool eval_state(const fg_wm_event *e, double y[3])
  * have none). */
 static void add_range(fg_accum *b, long lo, long hi, const double *y, double gain)
 {
-    for (long k = lo; k <= hi; k++) {
-        if (k < 0)
-            b->state[-1 - k] += gain * y[k - lo];
-        else if (k >= lo + 3)
-            b->d3[k] +=
-                gain * (y[k - lo] - 3.0 * y[k - lo - 1] + 3.0 * y[k - lo - 2] - y[k - lo - 3]);
-    }
+    for (long k = lo; k <= hi && k < 0; k++)
+        b->state[-1 - k] += gain * y[k - lo];
+    for (long k = lo + 3 > 0 ? lo + 3 : 0; k <= hi; k++)
+        b->d3[k] += gain * (y[k - lo] - 3.0 * y[k - lo - 1] + 3.0 * y[k - lo - 2] - y[k - lo - 3]);
 }
 
-/* Third differences of one breakpoint at sample position x where the
- * pressure gains a0 + a1 (x' - x) + a2 (x' - x)^2 (per sample units): its
- * running integral G(u) = a0 u + a1 u^2/2 + a2 u^3/3 from x, sampled at
- * sample edges, has a fourth difference that vanishes past four samples. */
-typedef struct breakpoint_taps {
-    long m;          /* the sample holding the breakpoint */
-    double taps[4];  /* its third differences at m .. m + 3 */
-} breakpoint_taps;
-
-/* The taps of one breakpoint at x, in sample m; false when they are not
+/* The third differences of one breakpoint at sample position x, in sample
+ * m, where the pressure gains a0 + a1 (x' - x) + a2 (x' - x)^2 (per sample
+ * units): its running integral G(u) = a0 u + a1 u^2/2 + a2 u^3/3 from x,
+ * sampled at sample edges, has a fourth difference that vanishes past four
+ * samples. Writes them, at m .. m + 3, to taps; false when they are not
  * finite. */
-static bool breakpoint(double x, long m, double a0, double a1, double a2, breakpoint_taps *t)
+static bool breakpoint(double x, long m, double a0, double a1, double a2, double taps[4])
 {
     double f = (double)m + 0.5 - x, g[4];
     for (int j = 0; j < 4; j++) {
         double u = j + f;
         g[j] = u * (a0 + u * (0.5 * a1 + u * a2 / 3.0));
     }
-    *t = (breakpoint_taps){m, {g[0], g[1] - 4.0 * g[0], g[2] - 4.0 * g[1] + 6.0 * g[0],
-                               g[3] - 4.0 * g[2] + 6.0 * g[1] - 4.0 * g[0]}};
-    return isfinite(t->taps[0]) && isfinite(t->taps[1]) && isfinite(t->taps[2]) &&
-           isfinite(t->taps[3]);
+    taps[0] = g[0];
+    taps[1] = g[1] - 4.0 * g[0];
+    taps[2] = g[2] - 4.0 * g[1] + 6.0 * g[0];
+    taps[3] = g[3] - 4.0 * g[2] + 6.0 * g[1] - 4.0 * g[0];
+    return isfinite(taps[0]) && isfinite(taps[1]) && isfinite(taps[2]) && isfinite(taps[3]);
 }
 
 /* The sample holding a wave's breakpoint i (0 .. 3, ascending) at x =
@@ -227,13 +219,12 @@ static void add_breakpoint(fg_accum *b, long m, const double *taps, double gain)
 #define TAP_MODERATE 1e100
 
 /* The taps of the breakpoints of e, whose span is first .. last, into
- * t[0 .. *count); false when one is not finite. When the wave's numbers
- * are moderate (TAP_MODERATE), so that every tap is finite, a breakpoint
- * that falls outside the block of n, which would add nothing
- * (add_breakpoint), is left out: a wave sounding through a block without a
- * breakpoint in it costs its state alone. */
-static bool eval_breakpoints(const fg_wm_event *e, long first, long last, long n,
-                             breakpoint_taps t[4], int *count)
+ * t->m and t->taps [0 .. t->count); false when one is not finite. When
+ * the wave's numbers are moderate (TAP_MODERATE), so that every tap is
+ * finite, a breakpoint that falls outside the block of n, which would add
+ * nothing (add_breakpoint), is left out: a wave sounding through a block
+ * without a breakpoint in it costs its state alone. */
+static bool eval_breakpoints(const fg_wm_event *e, long first, long last, long n, fg_wm_taps *t)
 {
     const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, wd = e->width;
@@ -251,17 +242,19 @@ static bool eval_breakpoints(const fg_wm_event *e, long first, long last, long n
      * quotient of the sign times the dividend */
     double a1 = 0.0, a2 = 0.0;
     bool finite = true;
-    *count = 0;
+    t->count = 0;
     for (int i = 0; i < 4; i++) {
         double x = e->center + taus[i] * wd;
         long m = breakpoint_sample(x, i, first, last);
         if (moderate && !breakpoint_in_block(m, n))
             continue;
-        if (*count == 0) {
+        if (t->count == 0) {
             a1 = 2.0 * w->b * psi / s / wd;
             a2 = 0.5 * (2.0 * w->b / s) / (wd * wd);
         }
-        finite = breakpoint(x, m, 0.0, jump1[i] * a1, jump2[i] * a2, &t[(*count)++]) && finite;
+        t->m[t->count] = m;
+        finite = breakpoint(x, m, 0.0, jump1[i] * a1, jump2[i] * a2, t->taps[t->count++]) &&
+                 finite;
     }
     return finite;
 }
@@ -295,16 +288,10 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
         return FG_WAVE_PENDING;
 
     if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
-        breakpoint_taps bp[4];
         t->closed_form = true;
         t->state = first < 0;
-        if ((t->state && !eval_state(e, t->y[0])) ||
-            !eval_breakpoints(e, first, last, n, bp, &t->count))
+        if ((t->state && !eval_state(e, t->y[0])) || !eval_breakpoints(e, first, last, n, t))
             return FG_WAVE_NON_FINITE;
-        for (int i = 0; i < t->count; i++) {
-            t->m[i] = bp[i].m;
-            memcpy(t->taps[i], bp[i].taps, sizeof t->taps[i]);
-        }
         return FG_WAVE_SOUNDING;
     }
     /* Breakpoints, ascending; each disturbs the samples m-3..m+3 around the
