@@ -1,11 +1,13 @@
 /* The engine object: creation with the storage of every kind of source,
  * destruction, and the any-thread getters. */
+#define _DEFAULT_SOURCE /* fg_big_alloc.h */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "engine_internal.h"
+#include "fg_big_alloc.h"
 #include "fg_prefault.h"
 #include "fg_rules.h"
 #include "spatial/binaural_internal.h"
@@ -112,28 +114,80 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
     return FG_OK;
 }
 
-/* Adds kind to the engine: its shared storage and a state per voice slot. */
-static fg_result add_kind(fg_engine *e, const fg_source_kind *kind)
+/* The engine's kind i: the built-in ones, then the caller's kinds[]. */
+static const fg_source_kind *kind_at(const fg_source_kind *const *kinds, size_t i)
 {
-    if (e->kind_count == FG_MAX_SOURCE_KINDS)
-        return FG_ERR_ARGUMENT;
-    for (size_t i = 0; i < e->kind_count; i++)
-        if (e->kinds[i].kind == kind)
+    return i < fg_builtin_kind_count ? fg_builtin_kinds[i] : kinds[i - fg_builtin_kind_count];
+}
+
+/* Whether kinds[0..count), after the built-in ones, can be added: each
+ * given (FG_ERR_NULL), none twice and at most FG_MAX_SOURCE_KINDS in all
+ * (FG_ERR_ARGUMENT); the first that cannot decides. */
+static fg_result check_kinds(const fg_source_kind *const *kinds, size_t count)
+{
+    const fg_source_kind *seen[FG_MAX_SOURCE_KINDS];
+    size_t n = 0;
+    for (size_t i = 0; i < fg_builtin_kind_count + count; i++) {
+        const fg_source_kind *kind = kind_at(kinds, i);
+        if (!kind)
+            return FG_ERR_NULL;
+        if (n == FG_MAX_SOURCE_KINDS)
             return FG_ERR_ARGUMENT;
-    fg_kind_slot *k = &e->kinds[e->kind_count];
-    k->kind = kind;
-    /* each state on cache lines of its own: the sim thread may write one
-     * voice's (a pose) while the audio thread reads another's */
+        for (size_t j = 0; j < n; j++)
+            if (seen[j] == kind)
+                return FG_ERR_ARGUMENT;
+        seen[n++] = kind;
+    }
+    return FG_OK;
+}
+
+/* Where the engine's object, its voice slots and each kind's pool of
+ * states lie in one allocation, each on cache lines of its own (a state:
+ * the sim thread may write one voice's, a pose, while the audio thread
+ * reads another's). One fg_big_calloc (fg_big_alloc.h) maps the 1.9 MB
+ * object and its pools as one huge page where the kernel allows: as
+ * calloc and aligned_alloc gave them, a render wrote ~45 of their pages,
+ * a page fault each (~13 us on the machine measured). */
+typedef struct engine_layout {
+    size_t voices, free_slots, live, active, pool[FG_MAX_SOURCE_KINDS], bytes;
+} engine_layout;
+
+/* offset rounded up to the next cache line, plus bytes; false on overflow */
+static bool layout_next(size_t *offset, size_t bytes, size_t *at)
+{
+    size_t a = (*offset + FG_CACHE_LINE - 1) / FG_CACHE_LINE * FG_CACHE_LINE;
+    if (a < *offset || bytes > SIZE_MAX - a)
+        return false;
+    *at = a;
+    *offset = a + bytes;
+    return true;
+}
+
+/* A kind's state stride: voice_bytes rounded up to whole cache lines. */
+static size_t kind_stride(const fg_source_kind *kind)
+{
     size_t lines = (kind->voice_bytes + FG_CACHE_LINE - 1) / FG_CACHE_LINE;
-    k->stride = (lines ? lines : 1) * FG_CACHE_LINE;
-    if (k->stride > SIZE_MAX / e->cfg.max_voices)
-        return FG_ERR_NO_MEMORY;
-    k->pool = aligned_alloc(FG_CACHE_LINE, k->stride * e->cfg.max_voices);
-    if (!k->pool)
-        return FG_ERR_NO_MEMORY;
-    memset(k->pool, 0, k->stride * e->cfg.max_voices);
-    e->kind_count++;
-    return kind->create ? kind->create(&e->cfg, &k->storage) : FG_OK;
+    return (lines ? lines : 1) * FG_CACHE_LINE;
+}
+
+/* The layout for max_voices slots and the kinds; false when its size
+ * overflows. */
+static bool engine_layout_of(uint32_t max_voices, const fg_source_kind *const *kinds,
+                             size_t count, engine_layout *l)
+{
+    /* max_voices <= MAX_VOICES_LIMIT: the arrays of slots cannot overflow */
+    size_t end = sizeof(fg_engine), v = max_voices;
+    bool ok = layout_next(&end, v * sizeof(fg_voice), &l->voices) &&
+              layout_next(&end, v * sizeof(uint32_t), &l->free_slots) &&
+              layout_next(&end, v, &l->live) &&
+              layout_next(&end, v * sizeof(fg_voice *), &l->active);
+    for (size_t i = 0; i < fg_builtin_kind_count + count && ok; i++) {
+        size_t stride = kind_stride(kind_at(kinds, i));
+        ok = stride <= SIZE_MAX / v && layout_next(&end, stride * v, &l->pool[i]);
+    }
+    /* a cache line more, to align the object where the allocation is not */
+    l->bytes = end + FG_CACHE_LINE;
+    return ok && l->bytes > end;
 }
 
 fg_result fg_engine_create_with(const fg_engine_config *config,
@@ -147,19 +201,33 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
     fg_result r = fg_engine_config_resolve(config, &cfg);
     if (r != FG_OK)
         return r;
-    fg_engine *e = calloc(1, sizeof *e);
-    if (!e)
+    r = check_kinds(kinds, count);
+    if (r != FG_OK)
+        return r;
+    engine_layout l;
+    if (!engine_layout_of(cfg.max_voices, kinds, count, &l))
         return FG_ERR_NO_MEMORY;
+    unsigned char *block = fg_big_calloc(l.bytes, 1);
+    if (!block)
+        return FG_ERR_NO_MEMORY;
+    unsigned char *base = block + (-(uintptr_t)block & (FG_CACHE_LINE - 1));
+    fg_engine *e = (fg_engine *)(void *)base;
+    e->block = block;
     e->cfg = cfg;
-    e->voices = calloc(cfg.max_voices, sizeof *e->voices);
-    e->free_slots = calloc(cfg.max_voices, sizeof *e->free_slots);
-    e->live = calloc(cfg.max_voices, 1);
-    e->active = calloc(cfg.max_voices, sizeof *e->active);
-    r = e->voices && e->free_slots && e->live && e->active ? FG_OK : FG_ERR_NO_MEMORY;
-    for (size_t i = 0; i < fg_builtin_kind_count && r == FG_OK; i++)
-        r = add_kind(e, fg_builtin_kinds[i]);
-    for (size_t i = 0; i < count && r == FG_OK; i++)
-        r = kinds[i] ? add_kind(e, kinds[i]) : FG_ERR_NULL;
+    e->voices = (fg_voice *)(void *)(base + l.voices);
+    e->free_slots = (uint32_t *)(void *)(base + l.free_slots);
+    e->live = base + l.live;
+    e->active = (fg_voice **)(void *)(base + l.active);
+    for (size_t i = 0; i < fg_builtin_kind_count + count && r == FG_OK; i++) {
+        fg_kind_slot *k = &e->kinds[e->kind_count++];
+        k->kind = kind_at(kinds, i);
+        k->stride = kind_stride(k->kind);
+        k->pool = base + l.pool[i];
+        /* the states are zeroed: mapped now, before the audio thread reads
+         * them (fg_prefault.h) */
+        fg_prefault_zeroed(k->pool, k->stride * cfg.max_voices);
+        r = k->kind->create ? k->kind->create(&e->cfg, &k->storage) : FG_OK;
+    }
     bool ok = r == FG_OK && fg_ring_init(&e->inbox, cfg.max_voices, sizeof(fg_voice *));
     ok = ok && fg_ring_init(&e->garbage, cfg.max_voices, sizeof(fg_voice *));
     fg_air air = {cfg.air_temperature_k - 273.15, cfg.air_humidity_pct, cfg.air_pressure_kpa};
@@ -214,16 +282,10 @@ void fg_engine_destroy(fg_engine *e)
     fg_bus_set_deinit(&e->buses);
     fg_binaural_deinit(&e->binaural);
     free(e->field_store);
-    for (size_t i = 0; i < e->kind_count; i++) {
+    for (size_t i = 0; i < e->kind_count; i++)
         if (e->kinds[i].kind->destroy)
             e->kinds[i].kind->destroy(e->kinds[i].storage);
-        free(e->kinds[i].pool);
-    }
-    free(e->active);
-    free(e->live);
-    free(e->free_slots);
-    free(e->voices);
-    free(e);
+    fg_big_free(e->block);
 }
 
 void fg_engine_get_config(const fg_engine *e, fg_engine_config *out)

@@ -25,6 +25,7 @@ typedef struct fg_kind_slot {
 } fg_kind_slot;
 
 struct fg_engine {
+    void *block;              /* the allocation holding it (engine.c), freed by destroy */
     fg_engine_config cfg;
     fg_kind_slot kinds[FG_MAX_SOURCE_KINDS];
     size_t kind_count;

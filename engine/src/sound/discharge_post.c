@@ -94,7 +94,6 @@ static void destroy_store(void *storage)
         return;
     fg_arena_deinit(&s->arena);
     fg_big_free(s->scratch.order);
-    fg_big_free(s->main_index);
     fg_big_free(s->events);
     free(s);
 }
@@ -110,8 +109,13 @@ static fg_result create_store(const fg_engine_config *cfg, void **storage)
     if (!s)
         return FG_ERR_NO_MEMORY;
     size_t nodes = (size_t)cfg->segment_capacity + 1;
-    s->events = fg_big_calloc(cfg->segment_capacity, sizeof *s->events);
-    s->main_index = fg_big_calloc(cfg->segment_capacity, sizeof *s->main_index);
+    /* the events and the main channel's indices in one allocation: 9 438
+     * segments' indices (38 kB) took 9 page faults apart */
+    _Static_assert(sizeof *s->events % _Alignof(uint32_t) == 0, "the indices follow the events");
+    s->events = fg_big_calloc(cfg->segment_capacity,
+                              sizeof *s->events + sizeof *s->main_index);
+    if (s->events)
+        s->main_index = (uint32_t *)(void *)(s->events + cfg->segment_capacity);
     /* the sort and its scratch in one allocation (fg_big_alloc.h): 9 438
      * segments' two of 151 kB took 74 page faults apart */
     s->scratch.order = fg_big_calloc(2 * nodes, sizeof *s->scratch.order);
@@ -121,7 +125,7 @@ static fg_result create_store(const fg_engine_config *cfg, void **storage)
         s->scratch.junction = (uint32_t *)(void *)(s->scratch.path_m + nodes);
         s->scratch.main = (uint8_t *)(s->scratch.junction + nodes);
     }
-    bool ok = s->events && s->main_index && s->scratch.order;
+    bool ok = s->events && s->scratch.order;
     ok = ok && fg_arena_init(&s->arena, cfg->segment_capacity, cfg->max_voices);
     return ok ? FG_OK : FG_ERR_NO_MEMORY;
 }
