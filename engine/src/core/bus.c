@@ -111,14 +111,28 @@ unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m, double *w_next)
     return FG_BUS_BAND0 + lo;
 }
 
+/* The lowest busy bus at or after b, or FG_BUS_COUNT: the busy buses in
+ * ascending order, as the loops over all of them took them. */
+static unsigned next_busy(const fg_bus_set *s, unsigned b)
+{
+    for (unsigned w = b / 64; w < sizeof s->busy / sizeof s->busy[0]; w++) {
+        uint64_t m = s->busy[w] & (b > w * 64 ? ~(uint64_t)0 << (b - w * 64) : ~(uint64_t)0);
+        if (m)
+            return w * 64 + (unsigned)__builtin_ctzll(m);
+    }
+    return FG_BUS_COUNT;
+}
+
 void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
 {
-    for (unsigned b = 0; b < s->count; b++) {
+    for (unsigned b = next_busy(s, 0); b < FG_BUS_COUNT; b = next_busy(s, b + 1)) {
         for (fg_channel_mask m = s->opened[b]; m; m &= m - 1)
             fg_accum_restart(&s->chan[__builtin_ctzll(m)].accum[b], n);
         for (fg_channel_mask m = s->pre_used[b]; m; m &= m - 1)
             memset(s->chan[__builtin_ctzll(m)].pre[b], 0, s->max_frames * sizeof(float));
         s->opened[b] = s->pre_used[b] = 0;
+        if (!s->ringing[b])
+            s->busy[b / 64] &= ~((uint64_t)1 << (b % 64));
     }
     s->frames = n;
 }
@@ -126,6 +140,7 @@ void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
 float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch)
 {
     s->pre_used[b] |= (fg_channel_mask)1 << ch;
+    fg_bus_busy(s, b);
     return s->chan[ch].pre[b];
 }
 
@@ -146,13 +161,24 @@ static bool ringing(fg_iir *f)
     return false;
 }
 
-/* Whether x[0..n) is all finite: x - x is 0 for a finite x, NaN otherwise
- * (a loop the compiler vectorises). */
+/* Lanes of all_finite: sums that do not wait on each other. */
+#define FINITE_LANES 8
+
+/* Whether x[0..n) is all finite: x - x is 0 for a finite x, NaN otherwise,
+ * and a sum of them 0 or NaN in any order. In lanes, a loop the compiler
+ * vectorises: one running sum was a chain of dependent adds. */
 static bool all_finite(const float *x, uint32_t n)
 {
+    float lane[FINITE_LANES] = {0};
+    uint32_t i = 0;
+    for (; i + FINITE_LANES <= n; i += FINITE_LANES)
+        for (int k = 0; k < FINITE_LANES; k++)
+            lane[k] += x[i + k] - x[i + k];
     float sum = 0.0f;
-    for (uint32_t i = 0; i < n; i++)
+    for (; i < n; i++)
         sum += x[i] - x[i];
+    for (int k = 0; k < FINITE_LANES; k++)
+        sum += lane[k];
     return sum == 0.0f;
 }
 
@@ -186,7 +212,7 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
 {
     uint64_t dropped = 0;
     fg_channel_mask written = 0;
-    for (unsigned b = 0; b < s->count; b++) {
+    for (unsigned b = next_busy(s, 0); b < FG_BUS_COUNT; b = next_busy(s, b + 1)) {
         /* the bus's channels to filter this block: their planes, whether
          * they had input, whether a filter still rings */
         unsigned ch[FG_BUS_MAX_CHANNELS], count = 0;

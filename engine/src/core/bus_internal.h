@@ -92,6 +92,9 @@ typedef struct fg_bus_set {
     fg_channel_mask ringing[FG_BUS_COUNT];  /* the filters still hold a tail: an IIR's
                                              * state, or the FIR's history of input */
     fg_channel_mask written; /* fg_bus_set_end's last call wrote out[ch] */
+    /* a bit per bus with a bit in opened, pre_used or ringing: a block
+     * visits only those of the 94 buses (fg_bus_busy) */
+    uint64_t busy[(FG_BUS_COUNT + 63) / 64];
     /* last, by channel: a layout of few channels uses (and maps) only the
      * first few of these 1.9 MB */
     fg_bus_channel chan[FG_BUS_MAX_CHANNELS];
@@ -124,6 +127,12 @@ void fg_bus_set_begin(fg_bus_set *s, uint32_t n);
  * sample. */
 float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch);
 
+/* Notes bus b as busy this block. */
+static inline void fg_bus_busy(fg_bus_set *s, unsigned b)
+{
+    s->busy[b / 64] |= (uint64_t)1 << (b % 64);
+}
+
 /* The difference-domain accumulator of bus b, channel ch, for waves added
  * per breakpoint; the first call of a block starts it on the block's
  * length. [audio-thread] */
@@ -133,6 +142,7 @@ static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
     const fg_channel_mask bit = (fg_channel_mask)1 << ch;
     if (!(s->opened[b] & bit)) {
         s->opened[b] |= bit;
+        fg_bus_busy(s, b);
         fg_accum_restart(a, s->frames);
     }
     return a;
