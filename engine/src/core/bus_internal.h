@@ -95,16 +95,17 @@ typedef struct fg_bus_set {
     /* a bit per bus with a bit in opened, pre_used or ringing: a block
      * visits only those of the 94 buses (fg_bus_busy) */
     uint64_t busy[(FG_BUS_COUNT + 63) / 64];
-    /* last, by channel: a layout of few channels uses (and maps) only the
-     * first few of these 1.9 MB */
+    /* last, by channel: a layout of few channels uses only the first few
+     * of these 1.9 MB (mapped all at once where the engine's allocation
+     * takes a huge page, core/engine.c) */
     fg_bus_channel chan[FG_BUS_MAX_CHANNELS];
 } fg_bus_set;
 
 /* Allocates the buses for blocks of max_frames frames or of fewer, to fit
  * FG_BUS_PLANE_BYTES (s->max_frames says), with the twins and their filter
  * for a head of radius head_radius_m (0: none, no twins). s is zeroed
- * memory (the engine's calloc); the part the channels use is mapped, the
- * channels beyond them are never touched. [main-thread] */
+ * memory (the engine's allocation); the part the channels use is mapped,
+ * the channels beyond them are never written. [main-thread] */
 fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
                           double c_m_s, double head_radius_m, const fg_air *air);
 void fg_bus_set_deinit(fg_bus_set *s);
