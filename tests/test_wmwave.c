@@ -725,6 +725,60 @@ static void test_state_in_the_middle(void **state)
     }
 }
 
+/* ---------------------------------------------------------------------------
+ * 9. The state of a wave inside one shell (a quadratic piece) is the
+ * sample averages the exact ranges give, bit for bit: fg_wm_pressure at
+ * each sample's midpoint plus the curvature term p'' h^2 / 24, p'' = -+2 B
+ * / s on the rising / falling shell; and, independently, the average of p
+ * over the sample from the closed-form integral, width (P(z) - P(a)), to
+ * 1e-9 of the peak. Both shells of a wave added in closed form (one
+ * added by exact ranges has a shell under 4 samples wide, whose state
+ * merges with its breakpoints' ranges). */
+typedef struct shell_case {
+    const char *name;
+    fg_wm_event e;
+    double p2; /* the shell's p'', per tau^2, over B / s */
+} shell_case;
+
+static void test_state_in_a_shell(void **state)
+{
+    (void)state;
+    const shell_case cases[] = {
+        {"rising", {shape_of(1.0, 0.5, 10.0), 998.0, 100.0}, -2.0},
+        {"falling", {shape_of(1.0, 0.5, 10.0), -1002.0, 100.0}, 2.0},
+    };
+    for (size_t ci = 0; ci < sizeof cases / sizeof cases[0]; ci++) {
+        const shell_case *c = &cases[ci];
+        const fg_wm_shape *w = &c->e.shape;
+        const double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
+        long first, last;
+        CHECK(fg_wm_event_in_range(&c->e), "%s: out of range", c->name);
+        fg_wm_event_span(&c->e, &first, &last);
+        fg_wm_taps t;
+        CHECK(fg_wm_taps_eval(&c->e, first, last, 64, &t) == FG_WAVE_SOUNDING,
+              "%s: not sounding", c->name);
+        CHECK(t.closed_form && t.state, "%s: not in closed form with a state", c->name);
+        const double curvature = c->p2 * w->b / w->s;
+        for (long k = -3; k <= -1; k++) {
+            double a = ((double)k - 0.5 - c->e.center) / c->e.width;
+            double z = ((double)k + 0.5 - c->e.center) / c->e.width;
+            CHECK(fabs(a) > inner && fabs(z) > inner && fabs(a) <= outer && fabs(z) <= outer &&
+                      (a < 0) == (z < 0),
+                  "%s: sample %ld outside one shell", c->name, k);
+            double h = z - a;
+            double want = fg_wm_pressure(w, 0.5 * (a + z)) + curvature * h * h / 24.0;
+            CHECK(memcmp(&t.y[0][k + 3], &want, sizeof want) == 0,
+                  "%s: sample %ld is %.17g, the exact range's %.17g", c->name, k,
+                  t.y[0][k + 3], want);
+            double integral = c->e.width * (fg_wm_integral(w, z) - fg_wm_integral(w, a));
+            double peak = 4.0 * w->b * w->psi;
+            CHECK(fabs(want - integral) <= 1e-9 * peak,
+                  "%s: sample %ld averages %.17g, the integral %.17g", c->name, k, want,
+                  integral);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -739,6 +793,7 @@ int main(void)
         cmocka_unit_test(test_tiny_s),
         cmocka_unit_test(test_overflowing_taps_refused_mid_wave),
         cmocka_unit_test(test_state_in_the_middle),
+        cmocka_unit_test(test_state_in_a_shell),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -130,9 +130,10 @@ static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
 
 /* The state, samples -3 .. -1, as eval_range(e, -3, -1, y) gives it, bit
  * for bit. A wave sounding through the block's start is evaluated there in
- * every block it spans, a long one mostly in its middle piece: when the
- * four edges (ascending) lie in it, each sample is its middle_average,
- * without placing each edge. */
+ * every block it spans, mostly inside one piece: when the four edges
+ * (ascending) lie in the middle piece, each sample is its middle_average;
+ * when they lie in one shell, its sample_average, with the shell's
+ * curvature divided once; either without placing each edge. */
 static bool eval_state(const fg_wm_event *e, double y[3])
 {
     const fg_wm_shape *w = &e->shape;
@@ -140,11 +141,20 @@ static bool eval_state(const fg_wm_event *e, double y[3])
     double edge[4];
     for (int j = 0; j < 4; j++)
         edge[j] = ((double)(j - 3) - 0.5 - e->center) / e->width;
-    if (!(edge[0] > -inner && edge[3] <= inner))
+    const int first = piece(inner, outer, edge[0]), last = piece(inner, outer, edge[3]);
+    if (first == 2 && last == 2) {
+        const double slope = w->s < w->psi ? -4.0 * w->b : 0.0;
+        for (int j = 0; j < 3; j++)
+            y[j] = middle_average(slope, outer, edge[j], edge[j + 1]);
+    } else if (first == last && (first == 1 || first == 3)) {
+        const double curvature = first == 1 ? -2.0 * w->b / w->s : 2.0 * w->b / w->s;
+        for (int j = 0; j < 3; j++) {
+            double h = edge[j + 1] - edge[j];
+            y[j] = fg_wm_pressure(w, 0.5 * (edge[j] + edge[j + 1])) + curvature * h * h / 24.0;
+        }
+    } else {
         return eval_range(e, -3, -1, y);
-    const double slope = w->s < w->psi ? -4.0 * w->b : 0.0;
-    for (int j = 0; j < 3; j++)
-        y[j] = middle_average(slope, outer, edge[j], edge[j + 1]);
+    }
     return isfinite(y[0]) && isfinite(y[1]) && isfinite(y[2]);
 }
 
