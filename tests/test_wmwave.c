@@ -426,7 +426,7 @@ static void test_chain_is_one_segment(void **state)
  * 5. The block accumulator equals the direct per-sample sum. The test
  * rebuilds each block in double from the state and third differences as the
  * header defines them, so the comparison is not limited by float output;
- * fg_accum_end is then checked against the same values to float rounding. */
+ * fg_accum_end_all is then checked against the same values to float rounding. */
 
 static fg_wm_event random_event(fg_rng *rng, double lo, double hi)
 {
@@ -495,7 +495,7 @@ static double run_blocks(const block_case *bc, uint64_t seed)
     double *ref = calloc(total, sizeof *ref);
     double *d3 = malloc(4096 * sizeof *d3);
     double *y = malloc(4096 * sizeof *y);
-    float *out = malloc(4096 * sizeof *out);
+    float *out = malloc(3 * 4096 * sizeof *out);
     assert_true(ev && ref && d3 && y && out);
     /* centres from before the first block to after the last */
     for (int i = 0; i < bc->events; i++) {
@@ -528,12 +528,19 @@ static double run_blocks(const block_case *bc, uint64_t seed)
                       first);
         }
         rebuild(&blk, y);
-        memset(out, 0, n * sizeof *out);
-        fg_accum_end(&blk, out, 0.5f);
+        /* alone, and paired with itself (both outputs as alone, bit for
+         * bit) */
+        memset(out, 0, 3 * n * sizeof *out);
+        const fg_accum *alone[1] = {&blk}, *pair[2] = {&blk, &blk};
+        fg_accum_end_all(alone, (float *[]){out}, 1);
+        fg_accum_end_all(pair, (float *[]){out + n, out + 2 * n}, 2);
+        CHECK(memcmp(out, out + n, n * sizeof *out) == 0 &&
+                  memcmp(out, out + 2 * n, n * sizeof *out) == 0,
+              "%s: a block ended in a pair differs from the block ended alone", bc->name);
         for (size_t k = 0; k < n; k++) {
             worst = fmax(worst, fabs(y[k] - ref[start + k]));
-            CHECK(fabs(out[k] - 0.5 * y[k]) <= 1e-7 * peak,
-                  "%s: fg_accum_end wrote %.9g for %.9g", bc->name, out[k], 0.5 * y[k]);
+            CHECK(fabs(out[k] - y[k]) <= 1e-7 * peak, "%s: fg_accum_end_all wrote %.9g for %.9g",
+                  bc->name, out[k], y[k]);
         }
         start += n;
     }

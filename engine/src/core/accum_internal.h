@@ -35,8 +35,10 @@ void fg_accum_begin(fg_accum *b, double *d3, size_t n);
  * previous block wrote. The storage must have been zero when first used. */
 void fg_accum_restart(fg_accum *b, size_t n);
 
-/* Integrates the block into y[0..n), adding gain * y into out. An untouched
- * block adds nothing. */
-void fg_accum_end(const fg_accum *b, float *out, float gain);
+/* Integrates each block b[k] into its y[0..n), adding y into out[k]
+ * (which must not overlap); an untouched block adds nothing. The outs may
+ * be written in any order: each block's samples are those it would give
+ * alone. */
+void fg_accum_end_all(const fg_accum *const *b, float *const *out, unsigned count);
 
 #endif

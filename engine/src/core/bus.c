@@ -224,34 +224,46 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             touched |= (fg_channel_mask)s->chan[c].accum[b].touched << c;
         }
         fg_channel_mask live = touched | s->pre_used[b] | s->ringing[b];
+        const fg_accum *acc[FG_BUS_MAX_CHANNELS];
         if (b == FG_BUS_DRY) {
             /* the first bus into out, which render zeroed, where nothing
              * was written into its planes */
+            unsigned dry = 0;
             for (fg_channel_mask m = touched & ~s->pre_used[b]; m; m &= m - 1) {
                 unsigned c = (unsigned)__builtin_ctzll(m);
-                fg_accum_end(&s->chan[c].accum[b], out[c], 1.0f);
+                ch[dry] = c;
+                acc[dry] = &s->chan[c].accum[b];
+                x[dry++] = out[c];
                 written |= (fg_channel_mask)1 << c;
-                if (!all_finite(out[c], n)) {
-                    memset(out[c], 0, n * sizeof(float));
+            }
+            fg_accum_end_all(acc, x, dry);
+            for (unsigned k = 0; k < dry; k++) {
+                if (!all_finite(x[k], n)) {
+                    memset(x[k], 0, n * sizeof(float));
                     dropped++;
                 }
             }
             live = s->pre_used[b] | s->ringing[b];
         }
+        unsigned planes = 0;
         for (fg_channel_mask m = live; m; m &= m - 1) {
             unsigned c = (unsigned)__builtin_ctzll(m);
-            bool in = (touched | s->pre_used[b]) >> c & 1;
-            float *plane = s->chan[c].pre[b];
+            ch[planes] = c;
+            acc[planes] = &s->chan[c].accum[b];
+            x[planes] = s->chan[c].pre[b];
+            input[planes++] = (touched | s->pre_used[b]) >> c & 1;
             s->pre_used[b] |= (fg_channel_mask)1 << c; /* zero it again next block */
-            fg_accum_end(&s->chan[c].accum[b], plane, 1.0f);
-            if (in && !all_finite(plane, n)) {
-                memset(plane, 0, n * sizeof(float));
+        }
+        fg_accum_end_all(acc, x, planes);
+        for (unsigned k = 0; k < planes; k++) {
+            if (input[k] && !all_finite(x[k], n)) {
+                memset(x[k], 0, n * sizeof(float));
                 dropped++;
                 continue;
             }
-            ch[count] = c;
-            x[count] = plane;
-            input[count] = in;
+            ch[count] = ch[k];
+            x[count] = x[k];
+            input[count] = input[k];
             tail[count] = false;
             count++;
         }
