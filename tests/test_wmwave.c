@@ -493,7 +493,7 @@ static double run_blocks(const block_case *bc, uint64_t seed)
     size_t total = bc->total;
     fg_wm_event *ev = malloc((size_t)bc->events * sizeof *ev);
     double *ref = calloc(total, sizeof *ref);
-    double *d3 = malloc(4096 * sizeof *d3);
+    double *d3 = malloc(3 * 4096 * sizeof *d3);
     double *y = malloc(4096 * sizeof *y);
     float *out = malloc(3 * 4096 * sizeof *out);
     assert_true(ev && ref && d3 && y && out);
@@ -528,15 +528,25 @@ static double run_blocks(const block_case *bc, uint64_t seed)
                       first);
         }
         rebuild(&blk, y);
-        /* alone, and paired with itself (both outputs as alone, bit for
-         * bit) */
+        /* alone, and two copies of it as a pair (both outputs as alone,
+         * bit for bit); each end leaves its third differences zero */
+        memcpy(d3 + 4096, d3, n * sizeof *d3);
+        memcpy(d3 + 2 * 4096, d3, n * sizeof *d3);
+        fg_accum copy[2] = {blk, blk};
+        copy[0].d3 = d3 + 4096;
+        copy[1].d3 = d3 + 2 * 4096;
         memset(out, 0, 3 * n * sizeof *out);
-        const fg_accum *alone[1] = {&blk}, *pair[2] = {&blk, &blk};
+        fg_accum *alone[1] = {&blk}, *pair[2] = {&copy[0], &copy[1]};
         fg_accum_end_all(alone, (float *[]){out}, 1);
         fg_accum_end_all(pair, (float *[]){out + n, out + 2 * n}, 2);
         CHECK(memcmp(out, out + n, n * sizeof *out) == 0 &&
                   memcmp(out, out + 2 * n, n * sizeof *out) == 0,
               "%s: a block ended in a pair differs from the block ended alone", bc->name);
+        bool cleared = true;
+        for (size_t c = 0; c < 3; c++)
+            for (size_t k = 0; k < n; k++)
+                cleared = cleared && d3[c * 4096 + k] == 0.0;
+        CHECK(cleared, "%s: an end left third differences in its block", bc->name);
         for (size_t k = 0; k < n; k++) {
             worst = fmax(worst, fabs(y[k] - ref[start + k]));
             CHECK(fabs(out[k] - y[k]) <= 1e-7 * peak, "%s: fg_accum_end_all wrote %.9g for %.9g",

@@ -14,8 +14,6 @@ void fg_accum_begin(fg_accum *b, double *d3, size_t n)
 
 void fg_accum_restart(fg_accum *b, size_t n)
 {
-    if (b->touched)
-        memset(b->d3, 0, b->n * sizeof *b->d3);
     b->n = n;
     b->state[0] = b->state[1] = b->state[2] = 0.0;
     b->touched = false;
@@ -23,7 +21,7 @@ void fg_accum_restart(fg_accum *b, size_t n)
 
 /* Three running sums rather than one third-order recurrence: each carries
  * only an add from sample to sample, so the loop is not latency-bound. */
-static void end_one(const fg_accum *b, float *out)
+static void end_one(fg_accum *b, float *out)
 {
     const double *s = b->state;
     double d2 = s[0] - 2.0 * s[1] + s[2]; /* second difference at -1 */
@@ -31,6 +29,7 @@ static void end_one(const fg_accum *b, float *out)
     double y = s[0];
     for (size_t k = 0; k < b->n; k++) {
         d2 += b->d3[k];
+        b->d3[k] = 0.0;
         d1 += d2;
         y += d1;
         out[k] += (float)y;
@@ -39,7 +38,7 @@ static void end_one(const fg_accum *b, float *out)
 
 /* Two blocks of one length at once: each runs end_one's sums in its order
  * (the same floats), and the two sets of sums do not wait on each other. */
-static void end_two(const fg_accum *a, float *out_a, const fg_accum *b, float *out_b)
+static void end_two(fg_accum *a, float *out_a, fg_accum *b, float *out_b)
 {
     const double *s = a->state, *t = b->state;
     double d2 = s[0] - 2.0 * s[1] + s[2], e2 = t[0] - 2.0 * t[1] + t[2];
@@ -48,6 +47,8 @@ static void end_two(const fg_accum *a, float *out_a, const fg_accum *b, float *o
     for (size_t k = 0; k < a->n; k++) {
         d2 += a->d3[k];
         e2 += b->d3[k];
+        a->d3[k] = 0.0;
+        b->d3[k] = 0.0;
         d1 += d2;
         e1 += e2;
         y += d1;
@@ -57,9 +58,9 @@ static void end_two(const fg_accum *a, float *out_a, const fg_accum *b, float *o
     }
 }
 
-void fg_accum_end_all(const fg_accum *const *b, float *const *out, unsigned count)
+void fg_accum_end_all(fg_accum *const *b, float *const *out, unsigned count)
 {
-    const fg_accum *held = NULL;
+    fg_accum *held = NULL;
     float *held_out = NULL;
     for (unsigned i = 0; i < count; i++) {
         if (!b[i]->touched)

@@ -31,14 +31,15 @@ typedef enum fg_wave_status {
 
 void fg_accum_begin(fg_accum *b, double *d3, size_t n);
 
-/* Starts the next block of n on the same storage, clearing only what the
- * previous block wrote. The storage must have been zero when first used. */
+/* Starts the next block of n on the same storage, which the previous
+ * block's end left zero (or fg_accum_begin zeroed). */
 void fg_accum_restart(fg_accum *b, size_t n);
 
 /* Integrates each block b[k] into its y[0..n), adding y into out[k]
- * (which must not overlap); an untouched block adds nothing. The outs may
- * be written in any order: each block's samples are those it would give
- * alone. */
-void fg_accum_end_all(const fg_accum *const *b, float *const *out, unsigned count);
+ * (which must not overlap), and zeroes its third differences as it reads
+ * them, for the next block: no pass of its own to clear them. An untouched
+ * block adds nothing. The outs may be written in any order: each block's
+ * samples are those it would give alone. */
+void fg_accum_end_all(fg_accum *const *b, float *const *out, unsigned count);
 
 #endif

@@ -224,7 +224,7 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             touched |= (fg_channel_mask)s->chan[c].accum[b].touched << c;
         }
         fg_channel_mask live = touched | s->pre_used[b] | s->ringing[b];
-        const fg_accum *acc[FG_BUS_MAX_CHANNELS];
+        fg_accum *acc[FG_BUS_MAX_CHANNELS];
         if (b == FG_BUS_DRY) {
             /* the first bus into out, which render zeroed, where nothing
              * was written into its planes */
