@@ -78,8 +78,8 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event_ear *ear, fg_
 {
     const double dir[3] = {ear->dir[0], ear->dir[1], ear->dir[2]};
     double gain[FG_LAYOUT_CHANNELS_MAX];
-    unsigned out;
-    const unsigned count = fg_layout_gains(play->cfg, ch, dir, &out, gain);
+    unsigned index[FG_LAYOUT_CHANNELS_MAX];
+    const unsigned count = fg_layout_reach(play->cfg, ch, dir, index, gain);
     const double next = ear->band_w;
     for (unsigned k = 0; k < FG_PLAY_BUSES; k++)
         play->bus[k] = ear->bus + k / 2 + (k % 2) * FG_BUS_PLAIN;
@@ -103,7 +103,7 @@ static inline fg_wave_status fg_discharge_add_event(const fg_event_ear *ear, fg_
     for (unsigned c = 0; c < count; c++) {
         if (gain[c] == 0.0)
             continue;
-        play->ch[play->channels] = out + c;
+        play->ch[play->channels] = index[c];
         play->gain[play->channels++] = gain[c];
     }
     if (play->channels == 0)

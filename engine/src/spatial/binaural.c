@@ -29,33 +29,38 @@ void fg_binaural_speaker(unsigned k, double dir[3])
     dir[2] = sin(el);
 }
 
-/* Adds weight w of a wave at azimuth az_turns (in turns, [0, 1)) to ring
- * j's two loudspeakers around it. */
-static void pan_ring(unsigned j, double az_turns, double w, double *gain)
+/* Ring j's two loudspeakers around azimuth az_turns (in turns, [0, 1))
+ * with weight w, at index[0..) and gain[0..) in ascending order; returns
+ * how many (none for w 0, one on a pole's ring of one). */
+static unsigned pan_ring(unsigned j, double az_turns, double w, unsigned *index, double *gain)
 {
     if (w == 0.0)
-        return;
+        return 0;
     unsigned n = ring_count[j];
     if (n == 1) {
-        gain[ring_first[j]] += w;
-        return;
+        index[0] = ring_first[j];
+        gain[0] = w;
+        return 1;
     }
     double p = az_turns * n, i = floor(p), frac = p - i;
-    unsigned i0 = (unsigned)i % n;
-    gain[ring_first[j] + i0] += w * (1.0 - frac);
-    gain[ring_first[j] + (i0 + 1) % n] += w * frac;
+    unsigned i0 = (unsigned)i % n, i1 = (i0 + 1) % n;
+    unsigned lo = i1 < i0; /* where i0's entry goes: after i1's when i1 wrapped to 0 */
+    index[lo] = ring_first[j] + i0;
+    gain[lo] = w * (1.0 - frac);
+    index[1 - lo] = ring_first[j] + i1;
+    gain[1 - lo] = w * frac;
+    return 2;
 }
 
-void fg_binaural_gains(const double dir[3], double *gain)
+unsigned fg_binaural_pan(const double dir[3], unsigned index[4], double gain[4])
 {
-    for (unsigned k = 0; k < FG_BINAURAL_SPEAKERS; k++)
-        gain[k] = 0.0;
     double z = dir[2] > 1.0 ? 1.0 : dir[2] < -1.0 ? -1.0 : dir[2];
     double el = asin(z) * 180.0 / FG_PI + 90.0; /* 0 .. 180 */
     double az = atan2(dir[1], dir[0]) / (2.0 * FG_PI);
     if (!isfinite(el) || !isfinite(az)) {
-        gain[ring_first[RINGS / 2]] = 1.0; /* no direction: ahead (never an index from NaN) */
-        return;
+        index[0] = ring_first[RINGS / 2]; /* no direction: ahead (never an index from NaN) */
+        gain[0] = 1.0;
+        return 1;
     }
     az = az < 0.0 ? az + 1.0 : az;
     az = az >= 1.0 ? 0.0 : az;
@@ -63,8 +68,19 @@ void fg_binaural_gains(const double dir[3], double *gain)
     unsigned j = jf >= RINGS - 1 ? RINGS - 2 : (unsigned)jf;
     double t = r - (double)j;
     t = t > 1.0 ? 1.0 : t;
-    pan_ring(j, az, 1.0 - t, gain);
-    pan_ring(j + 1, az, t, gain);
+    unsigned count = pan_ring(j, az, 1.0 - t, index, gain);
+    return count + pan_ring(j + 1, az, t, index + count, gain + count);
+}
+
+void fg_binaural_gains(const double dir[3], double *gain)
+{
+    for (unsigned k = 0; k < FG_BINAURAL_SPEAKERS; k++)
+        gain[k] = 0.0;
+    unsigned index[4];
+    double g[4];
+    unsigned count = fg_binaural_pan(dir, index, g);
+    for (unsigned k = 0; k < count; k++)
+        gain[index[k]] += g[k];
 }
 
 fg_result fg_binaural_check(const fg_hrir_set *h, double fs_hz)

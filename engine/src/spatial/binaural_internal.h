@@ -40,8 +40,13 @@ typedef struct fg_binaural {
  * z up). */
 void fg_binaural_speaker(unsigned k, double dir[3]);
 
-/* The FG_BINAURAL_SPEAKERS gains for a wave from the unit direction dir
- * (head frame): at most four non-zero, summing to 1. [audio-thread] */
+/* The loudspeakers a wave from the unit direction dir (head frame) is
+ * panned to: at most four, two on each of the rings of loudspeakers above
+ * and below it, their indices ascending in index[] and their gains, summing
+ * to 1, in gain[]; returns how many. [audio-thread] */
+unsigned fg_binaural_pan(const double dir[3], unsigned index[4], double gain[4]);
+
+/* The same as all FG_BINAURAL_SPEAKERS gains, the others 0. [audio-thread] */
 void fg_binaural_gains(const double dir[3], double *gain);
 
 /* The index of the set's measurement nearest the unit direction u. */

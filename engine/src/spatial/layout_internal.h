@@ -59,4 +59,20 @@ static inline unsigned fg_layout_gains(const fg_engine_config *cfg, unsigned ch,
     return 1;
 }
 
+/* fg_layout_gains as a list, index[k] and gain[k] for k below the count
+ * returned, the channels ascending (a gain may be 0: that channel gets
+ * nothing). Binaural: the at most four loudspeakers fg_binaural_pan names,
+ * not all fifty. [audio-thread] */
+static inline unsigned fg_layout_reach(const fg_engine_config *cfg, unsigned ch,
+                                       const double dir[3], unsigned *index, double *gain)
+{
+    if (cfg->layout == FG_LAYOUT_BINAURAL)
+        return fg_binaural_pan(dir, index, gain);
+    unsigned first;
+    const unsigned count = fg_layout_gains(cfg, ch, dir, &first, gain);
+    for (unsigned c = 0; c < count; c++)
+        index[c] = first + c;
+    return count;
+}
+
 #endif
