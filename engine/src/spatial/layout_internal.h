@@ -66,6 +66,11 @@ static inline unsigned fg_layout_gains(const fg_engine_config *cfg, unsigned ch,
 static inline unsigned fg_layout_reach(const fg_engine_config *cfg, unsigned ch,
                                        const double dir[3], unsigned *index, double *gain)
 {
+    if (cfg->layout == FG_LAYOUT_STEREO) {
+        index[0] = ch;
+        gain[0] = 1.0;
+        return 1;
+    }
     if (cfg->layout == FG_LAYOUT_BINAURAL)
         return fg_binaural_pan(dir, index, gain);
     unsigned first;
