@@ -239,20 +239,30 @@ static bool eval_breakpoints(const fg_wm_event *e, long first, long last, long n
     const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, wd = e->width;
     double inner = fabs(psi - s), outer = psi + s;
+    const bool moderate = fabs(w->b) <= TAP_MODERATE && psi <= TAP_MODERATE &&
+                          s >= 1.0 / TAP_MODERATE && wd <= TAP_MODERATE &&
+                          wd >= 1.0 / TAP_MODERATE;
+    t->count = 0;
+    /* A long wave sounds through most of its blocks with none of its
+     * breakpoints in them, which the loop below would find placing each:
+     * the outer two's samples are the span's ends, and the sample
+     * floor(x + 1/2) holding an inner one lies in the block's -3 .. n - 1
+     * exactly when x + 1/2 lies in [-3, n). */
+    if (moderate && first < -3 && last > n - 1) {
+        double rising = e->center + -inner * wd + 0.5, falling = e->center + inner * wd + 0.5;
+        if (!(rising >= -3.0 && rising < (double)n) && !(falling >= -3.0 && falling < (double)n))
+            return true;
+    }
     /* in ascending tau: where, and the signs of the jumps of p' and p''
      * there */
     const double taus[4] = {-outer, -inner, inner, outer};
     const double jump1[4] = {1.0, s < psi ? -1.0 : 1.0, s < psi ? 1.0 : -1.0, -1.0};
     const double jump2[4] = {-1.0, 1.0, 1.0, -1.0};
-    const bool moderate = fabs(w->b) <= TAP_MODERATE && psi <= TAP_MODERATE &&
-                          s >= 1.0 / TAP_MODERATE && wd <= TAP_MODERATE &&
-                          wd >= 1.0 / TAP_MODERATE;
     /* the jumps' sizes in samples, 2 B psi / s and 2 B / s per tau, divided
      * once for every breakpoint: a sign times a quotient is exactly the
      * quotient of the sign times the dividend */
     double a1 = 0.0, a2 = 0.0;
     bool finite = true;
-    t->count = 0;
     for (int i = 0; i < 4; i++) {
         double x = e->center + taus[i] * wd;
         long m = breakpoint_sample(x, i, first, last);
@@ -342,8 +352,12 @@ void fg_wm_taps_add(fg_accum *b, const fg_wm_taps *t, double gain)
 {
     b->touched = true;
     if (t->closed_form) {
-        if (t->state)
-            add_range(b, -3, -1, t->y[0], gain);
+        if (t->state) {
+            /* add_range's of -3 .. -1: the state alone */
+            b->state[2] += gain * t->y[0][0];
+            b->state[1] += gain * t->y[0][1];
+            b->state[0] += gain * t->y[0][2];
+        }
         for (int i = 0; i < t->count; i++)
             add_breakpoint(b, t->m[i], t->taps[i], gain);
         return;
