@@ -708,6 +708,15 @@ typedef struct state_case {
     bool closed_form;
 } state_case;
 
+/* Evaluates e, in range and sounding, for a block of 64 frames. */
+static void eval_sounding(const char *name, const fg_wm_event *e, fg_wm_taps *t)
+{
+    long first, last;
+    CHECK(fg_wm_event_in_range(e), "%s: out of range", name);
+    fg_wm_event_span(e, &first, &last);
+    CHECK(fg_wm_taps_eval(e, first, last, 64, t) == FG_WAVE_SOUNDING, "%s: not sounding", name);
+}
+
 static void test_state_in_the_middle(void **state)
 {
     (void)state;
@@ -720,12 +729,8 @@ static void test_state_in_the_middle(void **state)
     for (size_t ci = 0; ci < sizeof cases / sizeof cases[0]; ci++) {
         const state_case *c = &cases[ci];
         const fg_wm_shape *w = &c->e.shape;
-        long first, last;
-        CHECK(fg_wm_event_in_range(&c->e), "%s: out of range", c->name);
-        fg_wm_event_span(&c->e, &first, &last);
         fg_wm_taps t;
-        CHECK(fg_wm_taps_eval(&c->e, first, last, 64, &t) == FG_WAVE_SOUNDING,
-              "%s: not sounding", c->name);
+        eval_sounding(c->name, &c->e, &t);
         CHECK(t.closed_form == c->closed_form, "%s: added the other way", c->name);
         CHECK(c->closed_form ? t.state : t.lo[0] == -3 && t.hi[0] == -1,
               "%s: no state of its own", c->name);
@@ -768,12 +773,8 @@ static void test_state_in_a_shell(void **state)
         const shell_case *c = &cases[ci];
         const fg_wm_shape *w = &c->e.shape;
         const double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
-        long first, last;
-        CHECK(fg_wm_event_in_range(&c->e), "%s: out of range", c->name);
-        fg_wm_event_span(&c->e, &first, &last);
         fg_wm_taps t;
-        CHECK(fg_wm_taps_eval(&c->e, first, last, 64, &t) == FG_WAVE_SOUNDING,
-              "%s: not sounding", c->name);
+        eval_sounding(c->name, &c->e, &t);
         CHECK(t.closed_form && t.state, "%s: not in closed form with a state", c->name);
         const double curvature = c->p2 * w->b / w->s;
         for (long k = -3; k <= -1; k++) {
