@@ -172,8 +172,8 @@ static size_t kind_stride(const fg_source_kind *kind)
 
 /* The layout for max_voices slots and the kinds; false when its size
  * overflows. */
-static bool engine_layout_of(uint32_t max_voices, const fg_source_kind *const *kinds,
-                             size_t count, engine_layout *l)
+static bool engine_layout_of(uint32_t max_voices, const fg_source_kind *const *kinds, size_t count,
+                             engine_layout *l)
 {
     /* max_voices <= MAX_VOICES_LIMIT: the arrays of slots cannot overflow */
     size_t end = sizeof(fg_engine), v = max_voices;

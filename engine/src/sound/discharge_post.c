@@ -112,8 +112,7 @@ static fg_result create_store(const fg_engine_config *cfg, void **storage)
     /* the events and the main channel's indices in one allocation: 9 438
      * segments' indices (38 kB) took 9 page faults apart */
     _Static_assert(sizeof *s->events % _Alignof(uint32_t) == 0, "the indices follow the events");
-    s->events = fg_big_calloc(cfg->segment_capacity,
-                              sizeof *s->events + sizeof *s->main_index);
+    s->events = fg_big_calloc(cfg->segment_capacity, sizeof *s->events + sizeof *s->main_index);
     if (s->events)
         s->main_index = (uint32_t *)(void *)(s->events + cfg->segment_capacity);
     /* the sort and its scratch in one allocation (fg_big_alloc.h): 9 438
