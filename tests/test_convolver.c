@@ -9,8 +9,10 @@
  * quiet input), or as isolated clicks far fewer blocks apart than the
  * partitions (the history slots of silent blocks skipped among sounding
  * ones), and are rendered in calls of 1 to 200 frames, through the
- * multiply-add kernel init chose for this CPU and through the portable
- * one (dsp/spectrum_mac_internal.h), and with every call's silent input
+ * multiply-add kernel and transform init chose for this CPU and through
+ * the portable ones (dsp/spectrum_mac_internal.h; at 64 frames a partition
+ * the AVX2 transform of dsp/fft128_internal.h against fft_lanes.c's), and
+ * with every call's silent input
  * given as NULL (zeros the convolver need not read), which must give the
  * same output bit for bit. Every output sample is within 2e-6
  * of the output's peak: the convolver runs in float (rounding 6e-8), and
@@ -62,8 +64,10 @@ static void check_shape(const shape *sh, uint64_t seed, bool plain, bool nulls,
     fg_convolver c;
     assert_true(fg_convolver_init(&c, sh->in, sh->out, taps, B, h));
     assert_int_equal(c.partitions, sh->partitions);
-    if (plain)
-        c.mac = fg_spectrum_mac_plain; /* the portable kernel where init chose AVX2 */
+    if (plain) { /* the portable kernel and transform where init chose AVX2 */
+        c.mac = fg_spectrum_mac_plain;
+        c.fft128 = false;
+    }
     size_t t = 0;
     while (t < FRAMES) {
         size_t n = 1 + (size_t)fg_rng_range(&rng, 0.0, 199.999);
