@@ -296,7 +296,13 @@ static void inverse_outputs(fg_convolver *c)
         /* sample s of the window is element s / 2 (even s) or B + s / 2 */
         for (unsigned l = 0; l < count; l++) {
             float *y = c->out + (size_t)(o0 + l) * B;
-            for (size_t k = B / 2; k < B; k++) {
+            size_t k = B / 2;
+#ifdef FG_VF_SHUFFLE
+            for (; k + V <= B; k += V)
+                fg_vf_interleave(fg_vf_load(time[l] + k), fg_vf_load(time[l] + B + k),
+                                 y + 2 * k - B);
+#endif
+            for (; k < B; k++) {
                 y[2 * k - B] = time[l][k];
                 y[2 * k + 1 - B] = time[l][B + k];
             }
@@ -395,7 +401,10 @@ void fg_convolver_process(fg_convolver *c, const float *const *in, float *const 
          * the LV2 plugin does while it swaps engines, changes nothing) */
         for (unsigned o = 0; o < c->outputs; o++) {
             const float *y = c->out + (size_t)o * B + c->fill;
-            for (size_t k = 0; k < run; k++)
+            size_t k = 0;
+            for (; k + V <= run; k += V)
+                fg_vf_store(out[o] + done + k, fg_vf_load(y + k) + 0.0f);
+            for (; k < run; k++)
                 out[o][done + k] = y[k] + 0.0f;
         }
         c->fill += run;
