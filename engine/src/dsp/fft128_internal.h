@@ -3,7 +3,7 @@
  * an AVX2 vector: the 64-point complex transform of z[k] = x[2k] + i
  * x[2k+1] by four steps (eight-point DFTs down the columns of an 8 x 8
  * matrix held in registers, a twiddle multiply, a transpose, eight more:
- * Van Loan 1992, "Computational frameworks for the FFT", sec. 3.3), then
+ * Bailey 1990, "FFTs in external or hierarchical memory"), then
  * the usual split of a real transform. In the layouts of
  * dsp/fft_lanes_internal.h for a single signal: the forward transform
  * takes the 128 frames in their order (and splits them itself) and writes
