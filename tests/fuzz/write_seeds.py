@@ -3,7 +3,9 @@
   corpus/fulgur_fuzz_engine/ (fuzz_engine.c): one per scene feature (a
     spark, a continuous plasma ball, lightning through every propagation
     effect, Abe's model, a moving listener, parameters at their
-    limits' edges), in the byte layout the target reads;
+    limits' edges), in the byte layout the target reads; beside them,
+    not written here, the inputs the fuzzer found (found_*: each once
+    failed the target, kept so that every run replays them);
   corpus/fulgur_fuzz_wav/ (fuzz_wav.c): WAVs as fulgur and others write
     them (float mono, 16-bit stereo, with fulgur's calibration comment,
     RF64, truncated).
