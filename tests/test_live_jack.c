@@ -6,8 +6,8 @@
  *                      the recording holds the scene's four sparks, 0.5 s
  *                      apart to within a block and a half, at the level
  *                      the lock-step WAV of the same scene has (+-3 dB)
- *                      (a spark may be lost with each xrun reported, the
- *                      ones left still on the 0.5 s grid);
+ *                      (a spark may be lost with each xrun or late event
+ *                      reported, the ones left still on the 0.5 s grid);
  *   --audio portaudio:system, the same through PortAudio's JACK device;
  *   no server of that name: exit 2 and the message.
  * Skipped (exit 77) with the reason when jackd is missing or cannot start.
@@ -252,8 +252,9 @@ static double reference_peak(void)
     return m;
 }
 
-/* The xruns the report gives (it must name the device and give them). */
-static long reported_xruns(const char *report_path)
+/* The xruns the report gives (it must name the device and give them), and
+ * its late events (posts that came after their sound began). */
+static long reported_xruns(const char *report_path, long *late_events)
 {
     FILE *r = fopen(report_path, "r");
     assert_non_null(r);
@@ -264,29 +265,41 @@ static long reported_xruns(const char *report_path)
     char *xruns = strstr(text, "\"xruns\":");
     assert_non_null(strstr(text, "\"live\":"));
     assert_non_null(xruns);
+    char *late = strstr(text, "\"late\":");
+    assert_non_null(late);
+    char *events = strstr(late, "\"events\":");
+    assert_non_null(events);
+    *late_events = strtol(events + 9, NULL, 10);
     return strtol(xruns + 8, NULL, 10);
 }
 
 /* Every spark, on time, at the WAV's level. An xrun loses a period of the
- * output, and a spark (a few milliseconds) can vanish with it: with n
+ * output, and a spark (a few milliseconds) can vanish with it; so can a
+ * spark posted after its sound began (the run's thread held off the CPU:
+ * under ThreadSanitizer with both cores busy 10 of 40 runs lost one,
+ * and its report counted 2 late events, the spark's two ears). With n
  * xruns (the more of fulgur's report and the server's own count, as the
- * recorder was told) up to n sparks may be missing, and the onsets left
- * are a whole number of intervals apart. Without xruns all four must be
- * there. */
+ * recorder was told) and m late events up to n + m sparks may be missing,
+ * and the onsets left are a whole number of intervals apart. Without
+ * either all four must be there. */
 static void check_recording(const char *what, const char *report_path)
 {
-    long reported = reported_xruns(report_path), seen = atomic_load(&server_xruns);
+    long late;
+    long reported = reported_xruns(report_path, &late), seen = atomic_load(&server_xruns);
     long xruns = reported > seen ? reported : seen;
     size_t frames = (size_t)atomic_load(&recorded_frames);
     double peak = peak_of(recorded, frames), want = reference_peak();
     size_t at[SPARKS + 2];
     int n = onsets(recorded, frames, peak, at, SPARKS + 2);
     printf("%s: recorded %.2f s, peak %.4g Pa (lock-step WAV %.4g Pa, %+.2f dB), %d onsets, "
-           "%ld xruns (report %ld, server %ld)\n", what, (double)frames / RATE_HZ, peak, want,
-           20 * log10(peak / want), n, xruns, reported, seen);
+           "%ld xruns (report %ld, server %ld), %ld late events\n", what, (double)frames / RATE_HZ,
+           peak, want, 20 * log10(peak / want), n, xruns, reported, seen, late);
+    for (int i = 0; i < n; i++)
+        printf("  onset at %.4f s of the recording\n", (double)at[i] / RATE_HZ);
     assert_true(peak > 0);
     assert_true(fabs(20 * log10(peak / want)) < 3);
-    assert_true(n <= SPARKS && n >= SPARKS - (xruns < SPARKS - 1 ? xruns : SPARKS - 1));
+    const long may_miss = xruns + late;
+    assert_true(n <= SPARKS && n >= SPARKS - (may_miss < SPARKS - 1 ? may_miss : SPARKS - 1));
     for (int i = 1; i < n; i++) {
         double gap_s = (double)(at[i] - at[i - 1]) / RATE_HZ;
         long intervals = lround(gap_s / SPARK_INTERVAL_S);
