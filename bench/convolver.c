@@ -3,7 +3,7 @@
  * (the MIT KEMAR set's length at 48 kHz) in 64-frame partitions, fed
  * 512-frame calls of noise on 50, 10, 4 or 1 of the inputs (the others
  * silent, so skipped), through the multiply-add kernel and transform init
- * chooses for this CPU (AVX2 and FMA: spectrum_mac's and fft128's) and
+ * chooses for this CPU (AVX2 and FMA: spectrum_mac's and fft_avx2's) and
  * through the portable ones (fft_lanes.c's). The median of 5 runs of 10 s of
  * sound each, in the thread's CPU time, as ms per s of sound. Writes
  * bench/results/convolver.csv. */
@@ -68,7 +68,7 @@ int main(void)
                 }
                 if (plain) {
                     c.mac = fg_spectrum_mac_plain;
-                    c.fft128 = false;
+                    c.fft_avx2 = false;
                 }
                 const char *kernel = c.mac == fg_spectrum_mac_plain ? "portable" : "avx2+fma";
                 ms[r] = run_ms_per_s(&c, in, out);

@@ -1,7 +1,8 @@
 /* The engine's partitioned convolution (engine/src/dsp/convolver) against
  * the direct sum y_o[t] = sum_i sum_k h_io[k] x_i[t - B - k], in three
  * shapes: three inputs to two outputs through 300 taps in partitions of
- * 64 (5, the last one partial: the binaural shape), two inputs to three
+ * 128 (3, the last one partial: the binaural shape) and of 64 (5), two
+ * inputs to three
  * outputs (an odd count) through 37 taps in partitions of 4, and five
  * inputs to one output through 9 taps in partitions of 2 (blocks shorter
  * than a vector: the plain loops). The inputs sound in bursts with
@@ -10,8 +11,9 @@
  * partitions (the history slots of silent blocks skipped among sounding
  * ones), and are rendered in calls of 1 to 200 frames, through the
  * multiply-add kernel and transform init chose for this CPU and through
- * the portable ones (dsp/spectrum_mac_internal.h; at 64 frames a partition
- * the AVX2 transform of dsp/fft128_internal.h against fft_lanes.c's), and
+ * the portable ones (dsp/spectrum_mac_internal.h; at 128 and 64 frames a
+ * partition the AVX2 transforms of dsp/fft_avx2_internal.h against
+ * fft_lanes.c's), and
  * with every call's silent input
  * given as NULL (zeros the convolver need not read), which must give the
  * same output bit for bit. Every output sample is within 2e-6
@@ -66,7 +68,7 @@ static void check_shape(const shape *sh, uint64_t seed, bool plain, bool nulls,
     assert_int_equal(c.partitions, sh->partitions);
     if (plain) { /* the portable kernel and transform where init chose AVX2 */
         c.mac = fg_spectrum_mac_plain;
-        c.fft128 = false;
+        c.fft_avx2 = false;
     }
     size_t t = 0;
     while (t < FRAMES) {
@@ -111,6 +113,7 @@ static void matches_direct_convolution(void **state)
 {
     (void)state;
     static const shape shapes[] = {
+        {3, 2, 300, 128, 3},
         {3, 2, 300, 64, 5},
         {2, 3, 37, 4, 10},
         {5, 1, 9, 2, 5},

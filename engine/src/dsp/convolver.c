@@ -77,9 +77,7 @@ bool fg_convolver_init(fg_convolver *c, unsigned inputs, unsigned outputs, size_
         (block & (block - 1)) != 0 || !fg_fft_lanes_init(&c->fft, 2 * block))
         return false;
     c->mac = fg_spectrum_mac_pick(block);
-    c->fft128 = 2 * block == 128 && fg_fft128_avx2_available();
-    if (c->fft128)
-        fg_fft128_init(&c->fft128_plan);
+    c->fft_avx2 = fg_fft_avx2_available() && fg_fft_avx2_init(&c->fft_avx2_plan, 2 * block);
     c->inputs = inputs;
     c->outputs = outputs;
     c->block = block;
@@ -219,13 +217,13 @@ static void fill_lanes(fg_convolver *c, const float *const *src)
 #endif
 }
 
-/* One window (2B frames) to its packed spectrum in x, by fg_fft128 where
+/* One window (2B frames) to its packed spectrum in x, by fg_fft_avx2 where
  * the convolver chose it, else by the lanes' single-signal path. */
 static void forward_one(fg_convolver *c, const float *win, float *x)
 {
-#ifdef FG_FFT128_AVX2
-    if (c->fft128) {
-        fg_fft128_forward_avx2(&c->fft128_plan, win, x);
+#ifdef FG_FFT_AVX2
+    if (c->fft_avx2) {
+        fg_fft_avx2_forward(&c->fft_avx2_plan, win, x);
         return;
     }
 #endif
@@ -236,9 +234,9 @@ static void forward_one(fg_convolver *c, const float *win, float *x)
 /* A packed spectrum in x back to its split window, in place. */
 static void inverse_one(fg_convolver *c, float *x)
 {
-#ifdef FG_FFT128_AVX2
-    if (c->fft128) {
-        fg_fft128_inverse_avx2(&c->fft128_plan, x);
+#ifdef FG_FFT_AVX2
+    if (c->fft_avx2) {
+        fg_fft_avx2_inverse(&c->fft_avx2_plan, x);
         return;
     }
 #endif
@@ -247,7 +245,7 @@ static void inverse_one(fg_convolver *c, float *x)
 
 /* The forward transforms of the inputs in who[0 .. count) into their
  * newest history slots, count <= FG_VF_LANES: one per lane, or one at a
- * time by fg_fft128 where the convolver chose it, or, for fewer inputs
+ * time by fg_fft_avx2 where the convolver chose it, or, for fewer inputs
  * than lanes, each with its elements across the lanes (the same floats:
  * fft_lanes_internal.h); then their windows move on by a block. */
 static void forward_batch(fg_convolver *c, const unsigned *who, unsigned count)
@@ -256,7 +254,7 @@ static void forward_batch(fg_convolver *c, const unsigned *who, unsigned count)
     float *slot[V];
     for (unsigned l = 0; l < V; l++) /* lanes past count are not written */
         slot[l] = l < count ? c->history + ((size_t)who[l] * c->partitions + c->newest) * n : NULL;
-    if (c->fft128 || (c->fft.one && count < V)) {
+    if (c->fft_avx2 || (c->fft.one && count < V)) {
         for (unsigned l = 0; l < count; l++)
             forward_one(c, c->in + (size_t)who[l] * n, slot[l]);
     } else {
@@ -285,7 +283,7 @@ static void inverse_outputs(fg_convolver *c)
             spectra[l] = l < count ? time[l] : c->zeros;
         }
         /* each window, split, where its spectrum was */
-        if (c->fft128 || (c->fft.one && count < V)) {
+        if (c->fft_avx2 || (c->fft.one && count < V)) {
             for (unsigned l = 0; l < count; l++)
                 inverse_one(c, time[l]);
         } else {

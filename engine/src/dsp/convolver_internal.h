@@ -24,9 +24,9 @@
  * level, or eight bins with fused products where the CPU has AVX2 and FMA
  * (dsp/spectrum_mac_internal.h, the kernel chosen at init); the
  * transforms take FG_VF_LANES inputs (or outputs) at once, one per lane,
- * but for 64-frame partitions (the binaural layout's) on a CPU with AVX2
- * and FMA, where each signal takes dsp/fft128_internal.h's transform, a
- * quarter of the instructions of the lanes' per signal.
+ * but for 64- and 128-frame partitions (the binaural layout's) on a CPU
+ * with AVX2 and FMA, where each signal takes dsp/fft_avx2_internal.h's
+ * transform, a quarter of the instructions of the lanes' per signal.
  * The responses' spectra are computed in double (fg_fft) and rounded
  * once. Against the exact sum the output is off by float rounding, 1-2e-7
  * of its peak (tests/test_convolver.c), and the binaural renders of the
@@ -42,7 +42,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "fft128_internal.h"
+#include "fft_avx2_internal.h"
 #include "fft_internal.h"
 #include "fft_lanes_internal.h"
 #include "spectrum_mac_internal.h"
@@ -52,9 +52,9 @@ typedef struct fg_convolver {
     size_t block;         /* B, a power of two >= 2 */
     size_t partitions;    /* P */
     fg_fft_lanes fft;     /* 2B points */
-    bool fft128;          /* 2B = 128 on a CPU with AVX2 and FMA: each transform is
-                             fg_fft128's, one signal at a time */
-    fg_fft128 fft128_plan;
+    bool fft_avx2;        /* 2B = 128 or 256 on a CPU with AVX2 and FMA: each transform
+                             is fg_fft_avx2's, one signal at a time */
+    fg_fft_avx2 fft_avx2_plan;
     fg_spectrum_mac_fn mac; /* the multiply-add kernel for this CPU */
     float *filter;        /* [input][partition][output][2B]: packed spectra */
     float *history;       /* [input][slot][2B]: the inputs' last P block spectra */
