@@ -486,6 +486,9 @@ static const block_case block_cases[] = {
     {"block 4096", 60000, 4096, 400, 0x1p-24}, {"random blocks", 60000, 0, 400, 0x1p-24},
 };
 
+/* copies of each block ended together with others: a pair, then five */
+#define COPIES 7
+
 static double run_blocks(const block_case *bc, uint64_t seed)
 {
     fg_rng rng;
@@ -493,9 +496,9 @@ static double run_blocks(const block_case *bc, uint64_t seed)
     size_t total = bc->total;
     fg_wm_event *ev = malloc((size_t)bc->events * sizeof *ev);
     double *ref = calloc(total, sizeof *ref);
-    double *d3 = malloc(3 * 4096 * sizeof *d3);
+    double *d3 = malloc((COPIES + 1) * 4096 * sizeof *d3);
     double *y = malloc(4096 * sizeof *y);
-    float *out = malloc(3 * 4096 * sizeof *out);
+    float *out = malloc((COPIES + 1) * 4096 * sizeof *out);
     assert_true(ev && ref && d3 && y && out);
     /* centres from before the first block to after the last */
     for (int i = 0; i < bc->events; i++) {
@@ -528,22 +531,31 @@ static double run_blocks(const block_case *bc, uint64_t seed)
                       first);
         }
         rebuild(&blk, y);
-        /* alone, and two copies of it as a pair (both outputs as alone,
-         * bit for bit); each end leaves its third differences zero */
-        memcpy(d3 + 4096, d3, n * sizeof *d3);
-        memcpy(d3 + 2 * 4096, d3, n * sizeof *d3);
-        fg_accum copy[2] = {blk, blk};
-        copy[0].d3 = d3 + 4096;
-        copy[1].d3 = d3 + 2 * 4096;
-        memset(out, 0, 3 * n * sizeof *out);
-        fg_accum *alone[1] = {&blk}, *pair[2] = {&copy[0], &copy[1]};
-        fg_accum_end_all(alone, (float *[]){out}, 1);
-        fg_accum_end_all(pair, (float *[]){out + n, out + 2 * n}, 2);
-        CHECK(memcmp(out, out + n, n * sizeof *out) == 0 &&
-                  memcmp(out, out + 2 * n, n * sizeof *out) == 0,
-              "%s: a block ended in a pair differs from the block ended alone", bc->name);
+        /* alone, two copies of it as a pair and five copies at once (four
+         * in AVX2 where the CPU has it, and one): every output as alone,
+         * bit for bit; each end leaves its third differences zero */
+        fg_accum copy[COPIES];
+        float *copy_out[COPIES];
+        for (size_t c = 0; c < COPIES; c++) {
+            memcpy(d3 + (c + 1) * 4096, d3, n * sizeof *d3);
+            copy[c] = blk;
+            copy[c].d3 = d3 + (c + 1) * 4096;
+            copy_out[c] = out + (c + 1) * n;
+        }
+        memset(out, 0, (COPIES + 1) * n * sizeof *out);
+        fg_accum *alone[1] = {&blk}, *many[COPIES];
+        for (size_t c = 0; c < COPIES; c++)
+            many[c] = &copy[c];
+        fg_accum_end_all(alone, (float *[]){out}, 1, false);
+        fg_accum_end_all(many, copy_out, 2, false);
+        fg_accum_end_all(many + 2, copy_out + 2, COPIES - 2, fg_accum_avx2_available());
+        for (size_t c = 0; c < COPIES; c++)
+            CHECK(memcmp(out, copy_out[c], n * sizeof *out) == 0,
+                  "%s: copy %zu of a block, ended with others, differs from the block ended "
+                  "alone",
+                  bc->name, c);
         bool cleared = true;
-        for (size_t c = 0; c < 3; c++)
+        for (size_t c = 0; c <= COPIES; c++)
             for (size_t k = 0; k < n; k++)
                 cleared = cleared && d3[c * 4096 + k] == 0.0;
         CHECK(cleared, "%s: an end left third differences in its block", bc->name);

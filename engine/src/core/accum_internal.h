@@ -39,7 +39,19 @@ void fg_accum_restart(fg_accum *b, size_t n);
  * (which must not overlap), and zeroes its third differences as it reads
  * them, for the next block: no pass of its own to clear them. An untouched
  * block adds nothing. The outs may be written in any order: each block's
- * samples are those it would give alone. */
-void fg_accum_end_all(fg_accum *const *b, float *const *out, unsigned count);
+ * samples are those it would give alone, with avx2 (where
+ * fg_accum_avx2_available said so: four blocks of one length at a time)
+ * or without (two at a time). */
+void fg_accum_end_all(fg_accum *const *b, float *const *out, unsigned count, bool avx2);
+
+/* Whether this CPU runs fg_accum_end_four_avx2. [main-thread] */
+bool fg_accum_avx2_available(void);
+
+/* Four blocks of one length n from their running sums at sample -1
+ * (sum[0][c] the second difference of block c, sum[1][c] the first, sum[2][c]
+ * y): samples [0, n rounded down to a multiple of 4) as fg_accum_end_all
+ * ends them, the sums left at the last of those. Returns that count
+ * (core/accum_avx2.c; 0 where the build has no AVX2 kernel). */
+size_t fg_accum_end_four_avx2(fg_accum *const b[4], float *const out[4], double sum[3][4]);
 
 #endif

@@ -56,6 +56,7 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     fg_prefault_zeroed(s->d3, bytes);
     s->channels = channels;
     s->max_frames = max_frames;
+    s->accum_avx2 = fg_accum_avx2_available();
     s->fs_hz = fs_hz;
     s->air = *air;
     fg_result r = fg_band_plan_init(&s->plan, BAND_NEAR_M, BAND_FAR_M, FG_ABSORPTION_BANDS);
@@ -236,7 +237,7 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
                 x[dry++] = out[c];
                 written |= (fg_channel_mask)1 << c;
             }
-            fg_accum_end_all(acc, x, dry);
+            fg_accum_end_all(acc, x, dry, s->accum_avx2);
             for (unsigned k = 0; k < dry; k++) {
                 if (!all_finite(x[k], n)) {
                     memset(x[k], 0, n * sizeof(float));
@@ -254,7 +255,7 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             input[planes++] = (touched | s->pre_used[b]) >> c & 1;
             s->pre_used[b] |= (fg_channel_mask)1 << c; /* zero it again next block */
         }
-        fg_accum_end_all(acc, x, planes);
+        fg_accum_end_all(acc, x, planes, s->accum_avx2);
         for (unsigned k = 0; k < planes; k++) {
             if (input[k] && !all_finite(x[k], n)) {
                 memset(x[k], 0, n * sizeof(float));

@@ -85,6 +85,7 @@ typedef struct fg_bus_set {
     fg_abe_fir *fir;     /* [count / FG_BUS_PLAIN (plain, shadowed)][channels] */
     fg_air air;
     double fs_hz;
+    bool accum_avx2;     /* the CPU ends the accumulators four at a time in AVX2 */
     /* audio thread, a bit per channel of each bus: */
     fg_channel_mask opened[FG_BUS_COUNT];   /* accumulators handed out this block (and set
                                              * to its length): the others are zero, unused */
