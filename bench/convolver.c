@@ -1,6 +1,7 @@
 /* The binaural layout's HRIR convolution alone (engine/src/dsp/convolver):
  * its shape, 50 loudspeaker inputs to 2 ears through 558-tap responses
- * (the MIT KEMAR set's length at 48 kHz) in 64-frame partitions, fed
+ * (the MIT KEMAR set's length at 48 kHz) in its partitions
+ * (FG_BINAURAL_LATENCY_FRAMES), fed
  * 512-frame calls of noise on 50, 10, 4 or 1 of the inputs (the others
  * silent, so skipped), through the multiply-add kernel and transform init
  * chooses for this CPU (AVX2 and FMA: spectrum_mac's and fft_avx2's) and
@@ -14,10 +15,11 @@
 #include "bench_util.h"
 #include "dsp/convolver_internal.h"
 #include "fg_rng.h"
+#include "fulgur/engine.h"
 
 #define INPUTS 50
 #define TAPS 558
-#define BLOCK 64
+#define BLOCK FG_BINAURAL_LATENCY_FRAMES
 #define CALL 512
 #define SECONDS 10
 #define REPEATS 5
@@ -52,7 +54,7 @@ int main(void)
             "# %s; the binaural convolver: %d inputs, 2 outputs, %d taps, %d-frame partitions, "
             "%d-frame calls of noise on the sounding inputs, median of %d runs of %d s, thread "
             "CPU time\n",
-            machine, INPUTS, TAPS, BLOCK, CALL, REPEATS, SECONDS);
+            machine, INPUTS, TAPS, (int)BLOCK, CALL, REPEATS, SECONDS);
     fprintf(csv, "sounding,kernel,ms_per_s\n");
     for (size_t s = 0; s < sizeof sounding / sizeof sounding[0]; s++) {
         for (unsigned i = 0; i < INPUTS; i++)

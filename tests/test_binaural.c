@@ -239,6 +239,48 @@ static void kemar_itd_and_ild(void **state)
     assert_int_equal(failures, 0);
 }
 
+/* The output's delay: through a set whose every response is a unit
+ * impulse (each loudspeaker heard as it is), both ears are the spark at the
+ * head's centre FG_BINAURAL_LATENCY_FRAMES later, to float rounding, and
+ * silent before; a frame more or less is off by the wave's size. */
+static void output_is_latency_late(void **state)
+{
+    (void)state;
+    enum { TAPS = 8 };
+    const uint32_t count = kemar.set.count;
+    float *ir = calloc((size_t)count * TAPS, sizeof *ir);
+    assert_non_null(ir);
+    for (uint32_t s = 0; s < count; s++)
+        ir[(size_t)s * TAPS] = 1.0f;
+    fg_hrir_set unit = {.sample_rate_hz = FS, .count = count, .length = TAPS,
+                        .direction = kemar.set.direction, .left = ir, .right = ir};
+    static float l[FRAMES], r[FRAMES], mono[FRAMES];
+    const double u[3] = {0.6, 0.64, 0.48}; /* between loudspeakers: four of them */
+    render_at(u, (fg_engine_config){.layout = FG_LAYOUT_BINAURAL, .hrirs = &unit},
+              (float *[]){l, r});
+    render_centre(u, mono);
+    free(ir);
+    const size_t late = FG_BINAURAL_LATENCY_FRAMES;
+    double peak = 0.0, early = 0.0, off[3] = {0.0, 0.0, 0.0};
+    for (size_t t = 0; t < FRAMES; t++) {
+        peak = fmax(peak, fabs(mono[t]));
+        if (t < late)
+            early = fmax(early, fmax(fabs(l[t]), fabs(r[t])));
+        for (int d = -1; d <= 1; d++)
+            if (t + late + 1 < FRAMES && t >= 1)
+                off[d + 1] = fmax(off[d + 1], fmax(fabs(l[t + late + d] - mono[t]),
+                                                   fabs(r[t + late + d] - mono[t])));
+    }
+    print_message("peak %.3g Pa; before %zu frames %.3g; late by %zu - 1, %zu, %zu + 1: off by "
+                  "%.2e, %.2e, %.2e of the peak\n",
+                  peak, late, early, late, late, late, off[0] / peak, off[1] / peak,
+                  off[2] / peak);
+    assert_true(peak > 0.0);
+    assert_true(early == 0.0);
+    assert_true(off[1] < 1e-5 * peak);
+    assert_true(off[0] > 1e-2 * peak && off[2] > 1e-2 * peak);
+}
+
 /* The panning: a loudspeaker's own direction goes to it alone; any
  * direction to at most four loudspeakers with gains summing to 1; the
  * poles and a direction that is not a number stay inside the array. */
@@ -465,6 +507,7 @@ int main(void)
         cmocka_unit_test(kemar_as_read),
         cmocka_unit_test(kemar_equalized),
         cmocka_unit_test(kemar_itd_and_ild),
+        cmocka_unit_test(output_is_latency_late),
         cmocka_unit_test(panning_gains),
         cmocka_unit_test(engine_refuses_bad_hrirs),
         cmocka_unit_test(long_calls_are_blocks),

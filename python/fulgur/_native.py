@@ -79,7 +79,7 @@ fg_result fg_propagation_config_resolve(const fg_propagation_config *in,
 typedef struct fg_engine fg_engine;
 typedef enum fg_layout { FG_LAYOUT_STEREO = 0, FG_LAYOUT_AMBISONICS = 1,
                          FG_LAYOUT_BINAURAL = 2 } fg_layout;
-#define FG_BINAURAL_LATENCY_FRAMES 64
+#define FG_BINAURAL_LATENCY_FRAMES 128
 #define FG_HRIR_MAX_LENGTH 8192
 #define FG_HRIR_MAX_COUNT 65536
 typedef struct fg_hrir_set {

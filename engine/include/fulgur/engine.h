@@ -78,7 +78,7 @@ typedef enum fg_layout {
 
 /* The binaural filters' partition: the binaural output lags the sound
  * field by this many frames. */
-#define FG_BINAURAL_LATENCY_FRAMES 64u
+#define FG_BINAURAL_LATENCY_FRAMES 128u
 /* HRIRs of the binaural layout: at most this many taps, at most this many
  * directions. */
 #define FG_HRIR_MAX_LENGTH 8192u
