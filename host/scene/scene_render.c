@@ -152,12 +152,19 @@ static fg_result publish_poses(render_job *job, double horizon_s, char *err, siz
     return FG_OK;
 }
 
+/* Frames the output still sounds once every voice has finished: the
+ * binaural filters' delay and the length of their responses. */
+static uint64_t ring_out_frames(const scene *s)
+{
+    return s->layout == FG_LAYOUT_BINAURAL ? FG_BINAURAL_LATENCY_FRAMES + s->hrirs->length : 0;
+}
+
 static fg_result run(render_job *job, const scene_render_sink *sink, scene_render_report *report,
                char *err, size_t err_size)
 {
     const scene *s = job->s;
     double rate = s->sample_rate_hz;
-    uint64_t limit = scene_frame_limit(s);
+    uint64_t limit = scene_frame_limit(s), end = UINT64_MAX;
     while (report->frames < limit) {
         uint64_t frame = report->frames;
         double t = (double)frame / rate;
@@ -180,9 +187,11 @@ static fg_result run(render_job *job, const scene_render_sink *sink, scene_rende
         fg_engine_collect(job->engine);
         report->frames += n;
         fg_engine_get_report(job->engine, &report->engine);
-        if (s->duration_s == 0 && job->next == s->discharge_count &&
+        if (s->duration_s == 0 && end == UINT64_MAX && job->next == s->discharge_count &&
             job->aeros_posted == s->aero_count && job->fires.posted == s->fire_count &&
             report->engine.finished == s->discharge_count + s->aero_count + s->fire_count)
+            end = report->frames + ring_out_frames(s);
+        if (report->frames >= end)
             return FG_OK;
     }
     report->capped = s->duration_s == 0;
