@@ -6,6 +6,7 @@
 #include "bus_internal.h"
 #include "fg_big_alloc.h"
 #include "fg_prefault.h"
+#include "fg_simd.h"
 #include "air/band_filters_internal.h"
 #include "spatial/spherical_head_internal.h"
 
@@ -162,24 +163,24 @@ static bool ringing(fg_iir *f)
     return false;
 }
 
-/* Lanes of all_finite: sums that do not wait on each other. */
-#define FINITE_LANES 8
-
 /* Whether x[0..n) is all finite: x - x is 0 for a finite x, NaN otherwise,
- * and a sum of them 0 or NaN in any order. In lanes, a loop the compiler
- * vectorises: one running sum was a chain of dependent adds. */
+ * and a sum of them 0 or NaN in any order; in two vectors of sums that do
+ * not wait on each other. */
 static bool all_finite(const float *x, uint32_t n)
 {
-    float lane[FINITE_LANES] = {0};
+    fg_vf lane[2] = {fg_vf_set(0.0f), fg_vf_set(0.0f)};
     uint32_t i = 0;
-    for (; i + FINITE_LANES <= n; i += FINITE_LANES)
-        for (int k = 0; k < FINITE_LANES; k++)
-            lane[k] += x[i + k] - x[i + k];
-    float sum = 0.0f;
+    for (; i + 2 * FG_VF_LANES <= n; i += 2 * FG_VF_LANES) {
+        fg_vf a = fg_vf_load(x + i), b = fg_vf_load(x + i + FG_VF_LANES);
+        lane[0] += a - a;
+        lane[1] += b - b;
+    }
+    float sum = 0.0f, last[FG_VF_LANES];
     for (; i < n; i++)
         sum += x[i] - x[i];
-    for (int k = 0; k < FINITE_LANES; k++)
-        sum += lane[k];
+    fg_vf_store(last, lane[0] + lane[1]);
+    for (int k = 0; k < FG_VF_LANES; k++)
+        sum += last[k];
     return sum == 0.0f;
 }
 
