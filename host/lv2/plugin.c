@@ -323,6 +323,8 @@ static void run(LV2_Handle instance, uint32_t frames)
         for (uint32_t i = 0; i < frames; i++)
             out[k][i] *= gain;
     notify(p);
+    if (p->variant->layout == FG_LAYOUT_BINAURAL && p->ports[PORT_LATENCY])
+        *(float *)p->ports[PORT_LATENCY] = (float)FG_BINAURAL_LATENCY_FRAMES;
     *(float *)p->ports[PORT_DISCHARGES] = (float)p->discharges;
     *(float *)p->ports[PORT_FAILURES] = (float)p->failures;
 }

@@ -49,7 +49,8 @@
 /* Port indices, as in fulgur.ttl. Output channel 0 and 1 (the ears; ACN 0
  * and 1) are ports 1 and 2, as they always were; an ambisonic plugin's
  * further channels k = 2.. are ports PORT_COUNT + k - 2, the binaural
- * plugin's notify output (patch:Set of its SOFA file) is port PORT_COUNT. */
+ * plugin's notify output (patch:Set of its SOFA file) is port PORT_COUNT
+ * and its latency output (lv2:reportsLatency) port PORT_COUNT + 1. */
 typedef enum port_index {
     PORT_MIDI_IN = 0,
     PORT_OUT_LEFT,     /* channel 0 */
@@ -67,7 +68,8 @@ typedef enum port_index {
     PORT_DISCHARGES,
     PORT_FAILURES,
     PORT_COUNT,
-    PORT_NOTIFY = PORT_COUNT   /* binaural only */
+    PORT_NOTIFY = PORT_COUNT,  /* binaural only */
+    PORT_LATENCY               /* binaural only: FG_BINAURAL_LATENCY_FRAMES */
 } port_index;
 
 /* Output channels at most (third-order ambisonics), and ports. */
