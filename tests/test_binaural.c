@@ -273,8 +273,7 @@ static void output_is_latency_late(void **state)
     }
     print_message("peak %.3g Pa; before %zu frames %.3g; late by %zu - 1, %zu, %zu + 1: off by "
                   "%.2e, %.2e, %.2e of the peak\n",
-                  peak, late, early, late, late, late, off[0] / peak, off[1] / peak,
-                  off[2] / peak);
+                  peak, late, early, late, late, late, off[0] / peak, off[1] / peak, off[2] / peak);
     assert_true(peak > 0.0);
     assert_true(early == 0.0);
     assert_true(off[1] < 1e-5 * peak);

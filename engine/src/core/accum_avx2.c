@@ -17,8 +17,7 @@ AVX2 size_t fg_accum_end_four_avx2(fg_accum *const b[4], float *const out[4], do
 {
     const size_t end = b[0]->n & ~(size_t)3;
     const __m256d zero = _mm256_setzero_pd();
-    __m256d d2 = _mm256_loadu_pd(sum[0]), d1 = _mm256_loadu_pd(sum[1]),
-            y = _mm256_loadu_pd(sum[2]);
+    __m256d d2 = _mm256_loadu_pd(sum[0]), d1 = _mm256_loadu_pd(sum[1]), y = _mm256_loadu_pd(sum[2]);
     for (size_t k = 0; k < end; k += 4) {
         /* r[c]: block c's samples k .. k + 3, transposed to v[j]: sample
          * k + j of the four blocks */

@@ -254,8 +254,8 @@ INLINE_AVX2 void forward256(const fg_fft_avx2 *f, const float *window, float *x)
     dft64(f, z);
     for (int j = 0; j < 8; j++) {
         cv e = {_mm256_loadu_ps(re + 8 * j), _mm256_loadu_ps(im + 8 * j)};
-        cv t = mul(z[j], (cv){_mm256_loadu_ps(f->join_re + 8 * j),
-                              _mm256_loadu_ps(f->join_im + 8 * j)});
+        cv t = mul(z[j],
+                   (cv){_mm256_loadu_ps(f->join_re + 8 * j), _mm256_loadu_ps(f->join_im + 8 * j)});
         cv lo = add(e, t), hi = sub(e, t);
         _mm256_storeu_ps(re + 8 * j, lo.re);
         _mm256_storeu_ps(im + 8 * j, lo.im);
@@ -314,8 +314,8 @@ INLINE_AVX2 void inverse256(const fg_fft_avx2 *f, float *x)
         cv a = {_mm256_loadu_ps(yr + 8 * j), _mm256_loadu_ps(yi + 8 * j)};
         cv b = {_mm256_loadu_ps(yr + 64 + 8 * j), _mm256_loadu_ps(yi + 64 + 8 * j)};
         z[j] = add(a, b);
-        cv d = mul(sub(a, b), (cv){_mm256_loadu_ps(f->join_re + 8 * j),
-                                   _mm256_loadu_ps(f->join_im + 8 * j)});
+        cv d = mul(sub(a, b),
+                   (cv){_mm256_loadu_ps(f->join_re + 8 * j), _mm256_loadu_ps(f->join_im + 8 * j)});
         _mm256_storeu_ps(yr + 8 * j, d.re);
         _mm256_storeu_ps(yi + 8 * j, d.im);
     }
