@@ -7,7 +7,9 @@
 # frames, 100 are there) is analysed with a warning that names the file and
 # both counts; the whole file gives none. A 166-byte WAV whose LIST chunk
 # claims 4 GB (found by fulgur_fuzz_wav) kept libsndfile's header parser
-# busy for minutes: it is refused at once, the chunk named.
+# busy for minutes: it is refused at once, the chunk named. So is a 98-byte
+# WAV whose LIST holds a size libsndfile reads as a step backwards (its
+# parser looped forever; found by fulgur_fuzz_wav in CI).
 set -u
 fulgur=$1
 tmp=$(mktemp -d)
@@ -44,5 +46,12 @@ rc=$?
 [ "$rc" -eq 2 ] || { echo "a LIST chunk past the end: exit $rc, expected 2 (124: it hung)"; fail=1; }
 grep -q "'LIST' chunk at byte 36 claims .* past the file's end (166 bytes)" "$tmp/err" ||
     { echo "a LIST chunk past the end: no message naming it: $(cat "$tmp/err")"; fail=1; }
+printf 'RIFF\342\000\000\000WAVEfmt \020\000\000\000\003\000\002\000\200\273\000\000\000\334\000\010\005\000 \000LIST6\000\000\000a\200\000\000\000\000\000\000\001\000\000\000\370\377\377\377?\000\000\200\276\000\000\000>\000\000\000\000\000?\000\200\276\000\000\000>\000\000\000\000\000\000\000?\000\000\200\276\000\000\000>' > "$tmp/back.wav"
+[ "$(wc -c < "$tmp/back.wav")" -eq 98 ] || { echo "back.wav: not the 98-byte file"; fail=1; }
+timeout 20 "$fulgur" analyze "$tmp/back.wav" 2>"$tmp/err" >/dev/null
+rc=$?
+[ "$rc" -eq 2 ] || { echo "a LIST size read backwards: exit $rc, expected 2 (124: it hung)"; fail=1; }
+grep -q "'LIST' chunk at byte 36 holds .* at byte 52 claiming 4294967288 bytes" "$tmp/err" ||
+    { echo "a LIST size read backwards: no message naming it: $(cat "$tmp/err")"; fail=1; }
 [ "$fail" -eq 0 ] && echo "analyze: the header's rate and length are checked"
 exit "$fail"

@@ -2,8 +2,10 @@
  * here with libsndfile: a 48 kHz stereo file comes back mono at 44.1 kHz
  * with its 1 kHz tone's amplitude and frequency kept (libsamplerate); a
  * file at the synthesis rate comes back sample for sample; a missing
- * file, a text file, a 0.5 s clip, a 4 kHz file and a NaN frame are
- * refused with a message naming the file and the fault, holding nothing;
+ * file, a text file, a 0.5 s clip, a 4 kHz file, a NaN frame and a WAV
+ * whose LIST chunk libsndfile's parser would loop on forever (found by
+ * fulgur_fuzz_wav) are refused with a message naming the file and the
+ * fault, holding nothing;
  * what it reads trains a texture. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -61,8 +63,8 @@ static int setup(void **state)
 static int teardown(void **state)
 {
     (void)state;
-    const char *names[] = {"stereo48k.wav", "mono44k.wav", "short.wav", "slow.wav", "nan.wav",
-                           "text.wav"};
+    const char *names[] = {"stereo48k.wav", "mono44k.wav", "short.wav",    "slow.wav",
+                           "nan.wav",       "text.wav",    "backwards.wav"};
     char path[128];
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         path_of(path, sizeof path, names[i]);
@@ -154,6 +156,19 @@ static void test_refusals(void **state)
     expect_refusal("nan.wav", 44100.0, "frame 1000 is not a finite number");
     write_tone("mono44k.wav", 44100, 1, 1.5, SF_FORMAT_PCM_16, -1);
     expect_refusal("mono44k.wav", 1000.0, "synthesis rate 1000 Hz is outside");
+    static const unsigned char backwards[] = {
+        0x52, 0x49, 0x46, 0x46, 0xe2, 0x00, 0x00, 0x00, 0x57, 0x41, 0x56, 0x45, 0x66, 0x6d,
+        0x74, 0x20, 0x10, 0x00, 0x00, 0x00, 0x03, 0x00, 0x02, 0x00, 0x80, 0xbb, 0x00, 0x00,
+        0x00, 0xdc, 0x00, 0x08, 0x05, 0x00, 0x20, 0x00, 0x4c, 0x49, 0x53, 0x54, 0x36, 0x00,
+        0x00, 0x00, 0x61, 0x80, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00,
+        0xf8, 0xff, 0xff, 0xff, 0x3f, 0x00, 0x00, 0x80, 0xbe, 0x00, 0x00, 0x00, 0x3e, 0x00,
+        0x00, 0x00, 0x00, 0x00, 0x3f, 0x00, 0x80, 0xbe, 0x00, 0x00, 0x00, 0x3e, 0x00, 0x00,
+        0x00, 0x00, 0x00, 0x00, 0x00, 0x3f, 0x00, 0x00, 0x80, 0xbe, 0x00, 0x00, 0x00, 0x3e};
+    path_of(path, sizeof path, "backwards.wav");
+    f = fopen(path, "wb");
+    assert_int_equal(fwrite(backwards, 1, sizeof backwards, f), sizeof backwards);
+    fclose(f);
+    expect_refusal("backwards.wav", 44100.0, "libsndfile reads as a step backwards");
 }
 
 int main(void)

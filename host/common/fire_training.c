@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "fire_training.h"
+#include "wav_read.h"
 #include "fulgur/fire.h"
 
 #define MIN_RATE_HZ 8000.0
@@ -73,6 +74,13 @@ int fire_training_read(const char *path, double rate_hz, fire_training *out, cha
     if (!(rate_hz >= MIN_RATE_HZ && rate_hz <= MAX_RATE_HZ))
         return fail(err, err_size, path, "the synthesis rate %g Hz is outside 8000-384000 Hz",
                     rate_hz);
+    FILE *in = fopen(path, "rb");
+    if (in) { /* the chunks libsndfile's parser would loop on (wav_read.h) */
+        int refused = wav_check_chunks(in, path, err, err_size);
+        fclose(in);
+        if (refused)
+            return -1;
+    }
     SF_INFO info = {0};
     SNDFILE *file = sf_open(path, SFM_READ, &info);
     if (!file)

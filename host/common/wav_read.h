@@ -28,9 +28,11 @@ typedef struct wav_audio {
 
 /* Walks the chunks of a RIFF, RIFX or RF64 file in (from its start; its
  * position is left anywhere) and refuses one whose chunk other than "data"
- * claims more bytes than the file holds: libsndfile 1.2's header parser
+ * claims more bytes than the file holds, or whose LIST chunk holds a
+ * sub-chunk claiming more than the list: libsndfile 1.2's header parser
  * can loop for minutes on such a chunk (a LIST claiming 4 GB in a 240-byte
- * file, found by fulgur_fuzz_wav), so this runs before sf_open. A data
+ * file) or forever on such a sub-chunk (a 98-byte file; both found by
+ * fulgur_fuzz_wav), so this runs before sf_open. A data
  * chunk cut short is the truncated file wav_read reports; other files are
  * not walked. Returns 0, or -1 with a message naming name in err.
  * [main-thread] */
