@@ -809,6 +809,63 @@ static void test_state_in_a_shell(void **state)
     }
 }
 
+/* ---------------------------------------------------------------------------
+ * 10. A wave sounding through a block with none of its breakpoints in it
+ * adds its state alone; fg_wm_through finds exactly those waves, and the
+ * edges it places once give each bus's B (a share in [-1, 1] of the ear's)
+ * the state fg_wm_taps_eval gives, bit for bit. Over waves at random
+ * places around a block of 64, long and short, middle pieces of either
+ * sign and of 0 (s >= psi), both shells, and waves out of closed form. */
+static void test_through_is_the_state_alone(void **state)
+{
+    (void)state;
+    enum { N = 64, WAVES = 20000 };
+    fg_rng rng;
+    fg_rng_seed(&rng, 17);
+    int through = 0, other = 0, pieces[4] = {0};
+    static const double shares[] = {1.0, -0.37, 0.8125, 1.0 / 3.0};
+    for (int i = 0; i < WAVES; i++) {
+        double psi = fg_rng_range(&rng, 0.05, 12.0), s = fg_rng_range(&rng, 0.0, 1.0);
+        double width = fg_rng_range(&rng, 0.5, 300.0);
+        double reach = (psi + s) * width;
+        fg_wm_event e = {shape_of(fg_rng_range(&rng, -3.0, 3.0), s, psi),
+                         fg_rng_range(&rng, -reach - 8.0, N + reach + 8.0), width};
+        long first, last;
+        CHECK(fg_wm_event_in_range(&e), "wave %d: out of range", i);
+        fg_wm_event_span(&e, &first, &last);
+        fg_wm_state_edges edges;
+        const bool alone = fg_wm_through(&e, first, last, N, &edges);
+        for (size_t k = 0; k < sizeof shares / sizeof shares[0]; k++) {
+            fg_wm_event bus = e;
+            bus.shape.b = e.shape.b * shares[k];
+            fg_wm_taps t;
+            fg_wave_status st = fg_wm_taps_eval(&bus, first, last, N, &t);
+            bool state_alone = st == FG_WAVE_SOUNDING && t.closed_form && t.state && t.count == 0;
+            CHECK(alone == state_alone,
+                  "wave %d (psi %.17g, s %.17g, width %.17g, centre %.17g): "
+                  "through %d, the evaluation's state alone %d",
+                  i, psi, s, width, e.center, alone, state_alone);
+            if (!alone)
+                continue;
+            double y[3];
+            CHECK(fg_wm_state_values(&edges, &bus.shape, y), "wave %d: not finite", i);
+            CHECK(memcmp(y, t.y[0], sizeof y) == 0,
+                  "wave %d, share %g: state %.17g %.17g %.17g, the evaluation's %.17g %.17g %.17g",
+                  i, shares[k], y[0], y[1], y[2], t.y[0][0], t.y[0][1], t.y[0][2]);
+        }
+        if (alone) {
+            through++;
+            pieces[edges.piece]++;
+        } else {
+            other++;
+        }
+    }
+    CHECK(through > 1000 && other > 1000, "%d waves through the block, %d not", through, other);
+    CHECK(pieces[1] > 100 && pieces[2] > 100 && pieces[3] > 100,
+          "through in the rising shell %d, the middle %d, the falling shell %d", pieces[1],
+          pieces[2], pieces[3]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -824,6 +881,7 @@ int main(void)
         cmocka_unit_test(test_overflowing_taps_refused_mid_wave),
         cmocka_unit_test(test_state_in_the_middle),
         cmocka_unit_test(test_state_in_a_shell),
+        cmocka_unit_test(test_through_is_the_state_alone),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -55,12 +55,36 @@ static fg_wave_status wm_place(const fg_event *ev, const fg_event_ear *ear,
     return fg_wm_event_ended(at->last) ? FG_WAVE_DONE : FG_WAVE_SOUNDING;
 }
 
+/* A wave sounding through the block, which adds its state alone: the
+ * state's edges, placed once, give each bus's three values. */
+static fg_wave_status add_through(const fg_event_ear *ear, const fg_event_play *play,
+                                  const fg_wm_state_edges *edges)
+{
+    fg_wm_shape w = ear->wm;
+    fg_wave_status status = FG_WAVE_DONE;
+    for (int k = 0; k < FG_PLAY_BUSES; k++) {
+        if (play->share[k] == 0.0)
+            continue;
+        w.b = ear->wm.b * play->share[k];
+        double y[3];
+        if (!fg_wm_state_values(edges, &w, y))
+            return FG_WAVE_NON_FINITE;
+        status = FG_WAVE_SOUNDING;
+        for (unsigned c = 0; c < play->channels; c++)
+            fg_wm_state_add(fg_bus_accum(play->buses, play->bus[k], play->ch[c]), y, play->gain[c]);
+    }
+    return status;
+}
+
 /* Each bus's wave is evaluated once and added to every channel at its
  * gain: a layout of many channels (binaural's loudspeakers, ambisonics)
  * costs an evaluation per bus and an add per channel. */
 static fg_wave_status wm_add(const fg_event_ear *ear, const fg_event_play *play,
                              const fg_wave_place *at)
 {
+    fg_wm_state_edges edges;
+    if (fg_wm_through(&at->wm, at->first, at->last, (long)play->frames, &edges))
+        return add_through(ear, play, &edges);
     fg_wm_event we = at->wm;
     fg_wave_status status = FG_WAVE_DONE;
     for (int k = 0; k < FG_PLAY_BUSES; k++) {

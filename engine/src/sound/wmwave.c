@@ -133,29 +133,44 @@ static bool eval_range(const fg_wm_event *e, long lo, long hi, double *y)
  * every block it spans, mostly inside one piece: when the four edges
  * (ascending) lie in the middle piece, each sample is its middle_average;
  * when they lie in one shell, its sample_average, with the shell's
- * curvature divided once; either without placing each edge. */
-static bool eval_state(const fg_wm_event *e, double y[3])
+ * curvature divided once; either without placing each edge. The edges and
+ * their piece do not depend on B (state_edges), the values do
+ * (fg_wm_state_values). */
+static void state_edges(const fg_wm_event *e, fg_wm_state_edges *s)
 {
     const fg_wm_shape *w = &e->shape;
     const double inner = fabs(w->psi - w->s), outer = w->psi + w->s;
-    double edge[4];
     for (int j = 0; j < 4; j++)
-        edge[j] = ((double)(j - 3) - 0.5 - e->center) / e->width;
-    const int first = piece(inner, outer, edge[0]), last = piece(inner, outer, edge[3]);
-    if (first == 2 && last == 2) {
+        s->edge[j] = ((double)(j - 3) - 0.5 - e->center) / e->width;
+    const int first = piece(inner, outer, s->edge[0]), last = piece(inner, outer, s->edge[3]);
+    s->piece = first == last && first >= 1 && first <= 3 ? first : -1;
+}
+
+bool fg_wm_state_values(const fg_wm_state_edges *s, const fg_wm_shape *w, double y[3])
+{
+    const double *edge = s->edge;
+    if (s->piece == 2) {
+        const double outer = w->psi + w->s;
         const double slope = w->s < w->psi ? -4.0 * w->b : 0.0;
         for (int j = 0; j < 3; j++)
             y[j] = middle_average(slope, outer, edge[j], edge[j + 1]);
-    } else if (first == last && (first == 1 || first == 3)) {
-        const double curvature = first == 1 ? -2.0 * w->b / w->s : 2.0 * w->b / w->s;
+    } else {
+        const double curvature = s->piece == 1 ? -2.0 * w->b / w->s : 2.0 * w->b / w->s;
         for (int j = 0; j < 3; j++) {
             double h = edge[j + 1] - edge[j];
             y[j] = fg_wm_pressure(w, 0.5 * (edge[j] + edge[j + 1])) + curvature * h * h / 24.0;
         }
-    } else {
-        return eval_range(e, -3, -1, y);
     }
     return isfinite(y[0]) && isfinite(y[1]) && isfinite(y[2]);
+}
+
+/* The state of e, from its edges or, where they straddle a breakpoint,
+ * its exact range. */
+static bool eval_state(const fg_wm_event *e, double y[3])
+{
+    fg_wm_state_edges s;
+    state_edges(e, &s);
+    return s.piece < 0 ? eval_range(e, -3, -1, y) : fg_wm_state_values(&s, &e->shape, y);
 }
 
 /* Adds the range eval_range gave: state for k < 0, third differences for
@@ -228,6 +243,28 @@ static void add_breakpoint(fg_accum *b, long m, const double *taps, double gain)
  * 2^36 times it. */
 #define TAP_MODERATE 1e100
 
+static bool moderate(const fg_wm_event *e)
+{
+    const fg_wm_shape *w = &e->shape;
+    return fabs(w->b) <= TAP_MODERATE && w->psi <= TAP_MODERATE && w->s >= 1.0 / TAP_MODERATE &&
+           e->width <= TAP_MODERATE && e->width >= 1.0 / TAP_MODERATE;
+}
+
+/* Whether e, whose span is first .. last, sounds through the block of n
+ * with none of its breakpoints in it. A long wave sounds through most of
+ * its blocks so: the outer two's samples are the span's ends, and the
+ * sample floor(x + 1/2) holding an inner one lies in the block's -3 .. n
+ * - 1 exactly when x + 1/2 lies in [-3, n). */
+static bool sounds_through(const fg_wm_event *e, long first, long last, long n)
+{
+    if (!(first < -3 && last > n - 1))
+        return false;
+    const double inner = fabs(e->shape.psi - e->shape.s);
+    double rising = e->center + -inner * e->width + 0.5;
+    double falling = e->center + inner * e->width + 0.5;
+    return !(rising >= -3.0 && rising < (double)n) && !(falling >= -3.0 && falling < (double)n);
+}
+
 /* The taps of the breakpoints of e, whose span is first .. last, into
  * t->m and t->taps [0 .. t->count); false when one is not finite. When
  * the wave's numbers are moderate (TAP_MODERATE), so that every tap is
@@ -239,20 +276,10 @@ static bool eval_breakpoints(const fg_wm_event *e, long first, long last, long n
     const fg_wm_shape *w = &e->shape;
     double s = w->s, psi = w->psi, wd = e->width;
     double inner = fabs(psi - s), outer = psi + s;
-    const bool moderate = fabs(w->b) <= TAP_MODERATE && psi <= TAP_MODERATE &&
-                          s >= 1.0 / TAP_MODERATE && wd <= TAP_MODERATE &&
-                          wd >= 1.0 / TAP_MODERATE;
+    const bool moderate_taps = moderate(e);
     t->count = 0;
-    /* A long wave sounds through most of its blocks with none of its
-     * breakpoints in them, which the loop below would find placing each:
-     * the outer two's samples are the span's ends, and the sample
-     * floor(x + 1/2) holding an inner one lies in the block's -3 .. n - 1
-     * exactly when x + 1/2 lies in [-3, n). */
-    if (moderate && first < -3 && last > n - 1) {
-        double rising = e->center + -inner * wd + 0.5, falling = e->center + inner * wd + 0.5;
-        if (!(rising >= -3.0 && rising < (double)n) && !(falling >= -3.0 && falling < (double)n))
-            return true;
-    }
+    if (moderate_taps && sounds_through(e, first, last, n))
+        return true;
     /* in ascending tau: where, and the signs of the jumps of p' and p''
      * there */
     const double taus[4] = {-outer, -inner, inner, outer};
@@ -266,7 +293,7 @@ static bool eval_breakpoints(const fg_wm_event *e, long first, long last, long n
     for (int i = 0; i < 4; i++) {
         double x = e->center + taus[i] * wd;
         long m = breakpoint_sample(x, i, first, last);
-        if (moderate && !breakpoint_in_block(m, n))
+        if (moderate_taps && !breakpoint_in_block(m, n))
             continue;
         if (t->count == 0) {
             a1 = 2.0 * w->b * psi / s / wd;
@@ -348,16 +375,30 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
     return FG_WAVE_SOUNDING;
 }
 
+bool fg_wm_through(const fg_wm_event *e, long first, long last, long n, fg_wm_state_edges *s)
+{
+    if (!sounds_through(e, first, last, n) || !(e->shape.s * e->width >= CLOSED_FORM_MIN_SW) ||
+        !moderate(e))
+        return false;
+    state_edges(e, s);
+    return s->piece >= 0;
+}
+
+/* add_range's of -3 .. -1: the state alone */
+void fg_wm_state_add(fg_accum *b, const double y[3], double gain)
+{
+    b->touched = true;
+    b->state[2] += gain * y[0];
+    b->state[1] += gain * y[1];
+    b->state[0] += gain * y[2];
+}
+
 void fg_wm_taps_add(fg_accum *b, const fg_wm_taps *t, double gain)
 {
     b->touched = true;
     if (t->closed_form) {
-        if (t->state) {
-            /* add_range's of -3 .. -1: the state alone */
-            b->state[2] += gain * t->y[0][0];
-            b->state[1] += gain * t->y[0][1];
-            b->state[0] += gain * t->y[0][2];
-        }
+        if (t->state)
+            fg_wm_state_add(b, t->y[0], gain);
         for (int i = 0; i < t->count; i++)
             add_breakpoint(b, t->m[i], t->taps[i], gain);
         return;

@@ -116,5 +116,27 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
  * would, bit for bit. */
 void fg_wm_taps_add(fg_accum *b, const fg_wm_taps *t, double gain);
 
+/* The edges of the state's samples, -3 .. -1, in tau, and the one piece
+ * that holds all four (1 the rising shell, 2 the middle, 3 the falling
+ * shell), or -1: what of the state does not depend on B. */
+typedef struct fg_wm_state_edges {
+    double edge[4];
+    int piece;
+} fg_wm_state_edges;
+
+/* The state of a wave of shape w whose edges s lie in one piece, as
+ * fg_wm_taps_eval gives it, bit for bit; false when it is not finite. */
+bool fg_wm_state_values(const fg_wm_state_edges *s, const fg_wm_shape *w, double y[3]);
+
+/* Whether e, in range, whose span is first .. last, adds to a block of n
+ * its state alone, which lies in one piece (*s), and fg_wm_taps_eval of
+ * it with any B of no greater size gives the closed form's state and no
+ * breakpoint: a long wave sounding through a block. Its buses then share
+ * the edges and differ in fg_wm_state_values. */
+bool fg_wm_through(const fg_wm_event *e, long first, long last, long n, fg_wm_state_edges *s);
+
+/* Adds gain times a state y (samples -3 .. -1) to the accumulator, as
+ * fg_wm_taps_add adds a closed form's. */
+void fg_wm_state_add(fg_accum *b, const double y[3], double gain);
 
 #endif
