@@ -147,18 +147,31 @@ static uint64_t render_frames(const smf_event *ev, size_t count, double rate_hz,
     return (uint64_t)ceil(end_s * rate_hz);
 }
 
-/* Plays the events block by block into wav. */
+/* The frames the plugin's output lags its notes, from its latency output
+ * (lv2:reportsLatency), which it writes in its first run; 0 without one,
+ * or for one over a second (no plugin of fulgur.lv2 lags that much). */
+static uint64_t plugin_latency(const lv2_host *h, double rate_hz)
+{
+    float latency = lv2_host_get(h, "latency");
+    return latency > 0 && latency <= rate_hz ? (uint64_t)latency : 0;
+}
+
+/* Plays the events block by block into wav, as a host compensating the
+ * plugin's latency does: the first latency frames of its output are not
+ * written and as many more are rendered after the last, so that the WAV's
+ * frames stand where the notes are. */
 static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz, double tail_s,
                   audio_wav *wav)
 {
     uint64_t frames = render_frames(ev, count, rate_hz, tail_s), next = 0;
+    uint64_t latency = 0, end = frames;
     unsigned channels = lv2_host_channels(h);
     static float plane[LV2_HOST_CHANNELS_MAX][BLOCK], frame[LV2_HOST_CHANNELS_MAX * BLOCK];
-    float *planes[LV2_HOST_CHANNELS_MAX];
+    float *planes[LV2_HOST_CHANNELS_MAX], *kept[LV2_HOST_CHANNELS_MAX];
     for (unsigned k = 0; k < channels; k++)
         planes[k] = plane[k];
-    for (uint64_t start = 0; start < frames; start += BLOCK) {
-        uint32_t n = frames - start < BLOCK ? (uint32_t)(frames - start) : BLOCK;
+    for (uint64_t start = 0, n; start < end; start += n) {
+        n = end - start < BLOCK ? end - start : BLOCK;
         for (; next < count && (uint64_t)(ev[next].time_s * rate_hz) < start + n; next++) {
             uint64_t at = (uint64_t)(ev[next].time_s * rate_hz);
             if (lv2_host_midi(h, (uint32_t)(at - start), ev[next].status, ev[next].data1,
@@ -168,11 +181,20 @@ static int render(lv2_host *h, const smf_event *ev, size_t count, double rate_hz
                 return -1;
             }
         }
-        lv2_host_run_planes(h, n, planes);
+        lv2_host_run_planes(h, (uint32_t)n, planes);
         lv2_host_work(h);
-        audio_interleave(planes, channels, n, 1, frame);
+        if (start == 0) {
+            latency = plugin_latency(h, rate_hz);
+            end = frames + latency;
+        }
+        uint64_t skip = start < latency ? (latency - start < n ? latency - start : n) : 0;
+        if (skip == n)
+            continue;
+        for (unsigned k = 0; k < channels; k++)
+            kept[k] = planes[k] + skip;
+        audio_interleave(kept, channels, (uint32_t)(n - skip), 1, frame);
         char err[256];
-        if (audio_wav_write(wav, frame, n, err, sizeof err) != 0) {
+        if (audio_wav_write(wav, frame, (uint32_t)(n - skip), err, sizeof err) != 0) {
             fprintf(stderr, "fulgur-lv2-render: %s\n", err);
             return -1;
         }
