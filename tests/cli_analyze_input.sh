@@ -7,9 +7,14 @@
 # frames, 100 are there) is analysed with a warning that names the file and
 # both counts; the whole file gives none. A 166-byte WAV whose LIST chunk
 # claims 4 GB (found by fulgur_fuzz_wav) kept libsndfile's header parser
-# busy for minutes: it is refused at once, the chunk named. So is a 98-byte
-# WAV whose LIST holds a size libsndfile reads as a step backwards (its
-# parser looped forever; found by fulgur_fuzz_wav in CI).
+# busy for minutes: it is refused at once, the chunk named. libsndfile's
+# parser looped forever on a LIST holding a size it reads as a step
+# backwards (found by fulgur_fuzz_wav in CI: before the samples, then after
+# them) and on an RF64 LIST claiming 0xFFFFFFFF bytes (found by it here);
+# it now reads a header of fulgur's own (host/common/wav_file.c): the
+# 98-byte file, which has no data chunk, is refused, saying so; the same
+# LIST after 200 frames is not read, and the frames are analysed; the
+# 132-byte RF64 is refused, its LIST named.
 set -u
 fulgur=$1
 tmp=$(mktemp -d)
@@ -46,12 +51,25 @@ rc=$?
 [ "$rc" -eq 2 ] || { echo "a LIST chunk past the end: exit $rc, expected 2 (124: it hung)"; fail=1; }
 grep -q "'LIST' chunk at byte 36 claims .* past the file's end (166 bytes)" "$tmp/err" ||
     { echo "a LIST chunk past the end: no message naming it: $(cat "$tmp/err")"; fail=1; }
-printf 'RIFF\342\000\000\000WAVEfmt \020\000\000\000\003\000\002\000\200\273\000\000\000\334\000\010\005\000 \000LIST6\000\000\000a\200\000\000\000\000\000\000\001\000\000\000\370\377\377\377?\000\000\200\276\000\000\000>\000\000\000\000\000?\000\200\276\000\000\000>\000\000\000\000\000\000\000?\000\000\200\276\000\000\000>' > "$tmp/back.wav"
+back='LIST6\000\000\000a\200\000\000\000\000\000\000\001\000\000\000\370\377\377\377?\000\000\200\276\000\000\000>\000\000\000\000\000?\000\200\276\000\000\000>\000\000\000\000\000\000\000?\000\000\200\276\000\000\000>'
+printf 'RIFF\342\000\000\000WAVEfmt \020\000\000\000\003\000\002\000\200\273\000\000\000\334\000\010\005\000 \000'"$back" > "$tmp/back.wav"
 [ "$(wc -c < "$tmp/back.wav")" -eq 98 ] || { echo "back.wav: not the 98-byte file"; fail=1; }
 timeout 20 "$fulgur" analyze "$tmp/back.wav" 2>"$tmp/err" >/dev/null
 rc=$?
 [ "$rc" -eq 2 ] || { echo "a LIST size read backwards: exit $rc, expected 2 (124: it hung)"; fail=1; }
-grep -q "'LIST' chunk at byte 36 holds .* at byte 52 claiming 4294967288 bytes" "$tmp/err" ||
-    { echo "a LIST size read backwards: no message naming it: $(cat "$tmp/err")"; fail=1; }
+grep -q "back.wav: it has no 'data' chunk" "$tmp/err" ||
+    { echo "a LIST size read backwards: no message naming the fault: $(cat "$tmp/err")"; fail=1; }
+{ cat "$tmp/ok.wav"; printf "$back"; } > "$tmp/after.wav"
+timeout 20 "$fulgur" analyze "$tmp/after.wav" 2>"$tmp/err" >"$tmp/out"
+rc=$?
+[ "$rc" -eq 0 ] || { echo "that LIST after the samples: exit $rc, expected 0 (124: it hung)"; fail=1; }
+grep -q "0.004 s" "$tmp/out" || { echo "that LIST after the samples: not 200 frames: $(cat "$tmp/out")"; fail=1; }
+{ printf 'RF64\377\377\377\377WAVELIST'; head -c 110 /dev/zero | tr '\000' '\377'; printf '\350\350\350\377\377\377'; } > "$tmp/rf64.wav"
+[ "$(wc -c < "$tmp/rf64.wav")" -eq 132 ] || { echo "rf64.wav: not the 132-byte file"; fail=1; }
+timeout 20 "$fulgur" analyze "$tmp/rf64.wav" 2>"$tmp/err" >/dev/null
+rc=$?
+[ "$rc" -eq 2 ] || { echo "an RF64 LIST of 0xFFFFFFFF bytes: exit $rc, expected 2 (124: it hung)"; fail=1; }
+grep -q "'LIST' chunk at byte 12 claims 4294967295 bytes, past the file's end (132 bytes)" "$tmp/err" ||
+    { echo "an RF64 LIST of 0xFFFFFFFF bytes: no message naming it: $(cat "$tmp/err")"; fail=1; }
 [ "$fail" -eq 0 ] && echo "analyze: the header's rate and length are checked"
 exit "$fail"

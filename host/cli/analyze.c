@@ -1,10 +1,11 @@
 /* fulgur analyze: a WAV's level figures, and its waveform envelope and
  * spectrogram as gnuplot-ready text (scripts/plot.gp draws them). */
+#include <errno.h>
 #include <math.h>
-#include <sndfile.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "common/calibration.h"
 #include "common/commands.h"
@@ -34,22 +35,16 @@ static int read_wav(const char *path, audio *a)
 {
     char err[512];
     FILE *in = fopen(path, "rb");
-    if (in) {
-        int bad = wav_check_chunks(in, path, err, sizeof err);
-        fclose(in);
-        if (bad) {
-            fprintf(stderr, "fulgur: %s\n", err);
-            return -1;
-        }
-    }
-    SF_INFO info = {0};
-    SNDFILE *f = sf_open(path, SFM_READ, &info);
-    if (!f) {
-        fprintf(stderr, "fulgur: %s: %s\n", path, sf_strerror(NULL));
+    if (!in) {
+        fprintf(stderr, "fulgur: %s: cannot open it: %s\n", path, strerror(errno));
         return -1;
     }
-    int rc = wav_read(f, &info, path, &a->wav, err, sizeof err);
-    sf_close(f);
+    wav_file file;
+    int rc = wav_open(&file, in, path, err, sizeof err);
+    if (rc == 0)
+        rc = wav_read(&file, path, &a->wav, err, sizeof err);
+    wav_close(&file);
+    fclose(in);
     if (rc != 0) {
         fprintf(stderr, "fulgur: %s\n", err);
         return -1;

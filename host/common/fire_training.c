@@ -1,3 +1,4 @@
+#include <errno.h>
 #include <math.h>
 #include <samplerate.h>
 #include <stdarg.h>
@@ -7,7 +8,7 @@
 #include <string.h>
 
 #include "fire_training.h"
-#include "wav_read.h"
+#include "wav_file.h"
 #include "fulgur/fire.h"
 
 #define MIN_RATE_HZ 8000.0
@@ -75,16 +76,14 @@ int fire_training_read(const char *path, double rate_hz, fire_training *out, cha
         return fail(err, err_size, path, "the synthesis rate %g Hz is outside 8000-384000 Hz",
                     rate_hz);
     FILE *in = fopen(path, "rb");
-    if (in) { /* the chunks libsndfile's parser would loop on (wav_read.h) */
-        int refused = wav_check_chunks(in, path, err, err_size);
+    if (!in)
+        return fail(err, err_size, path, "cannot open it: %s", strerror(errno));
+    wav_file file;
+    if (wav_open(&file, in, path, err, err_size) != 0) {
         fclose(in);
-        if (refused)
-            return -1;
+        return -1;
     }
-    SF_INFO info = {0};
-    SNDFILE *file = sf_open(path, SFM_READ, &info);
-    if (!file)
-        return fail(err, err_size, path, "cannot read it as a sound file: %s", sf_strerror(NULL));
+    const SF_INFO info = file.info;
     double rate = info.samplerate, seconds = rate > 0 ? (double)info.frames / rate : 0.0;
     int bad = 0;
     if (info.frames <= 0 || info.channels <= 0)
@@ -97,8 +96,9 @@ int fire_training_read(const char *path, double rate_hz, fire_training *out, cha
     else if (seconds > FG_FIRE_TRAINING_MAX_S)
         bad = fail(err, err_size, path, "is %.0f s long; a training clip may be 600 s at most",
                    seconds);
-    float *mono = bad ? NULL : read_mono(file, &info, path, err, err_size);
-    sf_close(file);
+    float *mono = bad ? NULL : read_mono(file.sndfile, &info, path, err, err_size);
+    wav_close(&file);
+    fclose(in);
     if (!mono)
         return -1;
     size_t frames = (size_t)info.frames;

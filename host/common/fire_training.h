@@ -1,7 +1,8 @@
 /* A training clip for fire texture synthesis (fulgur/fire.h,
- * fg_fire_texture_create) from a sound file the user supplies: read with
- * libsndfile (WAV, FLAC, AIFF, ...), mixed to mono by averaging its
- * channels, checked (length, rate, finite samples) and, at another rate
+ * fg_fire_texture_create) from a WAV the user supplies (RIFF, RIFX or
+ * RF64; wav_open shows libsndfile a header of its own, and libsndfile
+ * decodes the samples), mixed to mono by averaging its channels, checked
+ * (length, rate, finite samples) and, at another rate
  * than the synthesis rate, converted with libsamplerate's best sinc
  * converter. The project ships no recording; without a file the engine's
  * procedural clip (fg_fire_texture_create_default) is what there is.
@@ -20,9 +21,8 @@ typedef struct fire_training {
 } fire_training;
 
 /* Reads path into *out at rate_hz (8000 .. 384000). Returns 0, or -1 with
- * a message naming path and what is wrong in err: unreadable or not a
- * sound file, no
- * frames, a rate outside 8000 .. 384000 Hz, shorter than
+ * a message naming path and what is wrong in err: unreadable, not a WAV
+ * or one wav_open refuses, no frames, a rate outside 8000 .. 384000 Hz, shorter than
  * FG_FIRE_TRAINING_MIN_S or longer than FG_FIRE_TRAINING_MAX_S, a frame
  * that is not a finite number, a failed conversion. On error *out is
  * zeroed and nothing is held. */

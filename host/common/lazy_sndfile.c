@@ -8,7 +8,7 @@
 #include "lazy_library.h"
 
 static struct {
-    __typeof__(sf_open) *open;
+    __typeof__(sf_open_virtual) *open_virtual;
     __typeof__(sf_open_fd) *open_fd;
     __typeof__(sf_close) *close;
     __typeof__(sf_strerror) *strerror;
@@ -17,8 +17,6 @@ static struct {
     __typeof__(sf_writef_float) *writef_float;
     __typeof__(sf_set_string) *set_string;
     __typeof__(sf_get_string) *get_string;
-    __typeof__(sf_get_chunk_iterator) *get_chunk_iterator;
-    __typeof__(sf_get_chunk_size) *get_chunk_size;
 } api;
 
 static pthread_once_t once = PTHREAD_ONCE_INIT;
@@ -26,7 +24,7 @@ static pthread_once_t once = PTHREAD_ONCE_INIT;
 static void load(void)
 {
     const library_symbol symbols[] = {
-        LIBRARY_SYMBOL(api.open, sf_open),
+        LIBRARY_SYMBOL(api.open_virtual, sf_open_virtual),
         LIBRARY_SYMBOL(api.open_fd, sf_open_fd),
         LIBRARY_SYMBOL(api.close, sf_close),
         LIBRARY_SYMBOL(api.strerror, sf_strerror),
@@ -35,16 +33,14 @@ static void load(void)
         LIBRARY_SYMBOL(api.writef_float, sf_writef_float),
         LIBRARY_SYMBOL(api.set_string, sf_set_string),
         LIBRARY_SYMBOL(api.get_string, sf_get_string),
-        LIBRARY_SYMBOL(api.get_chunk_iterator, sf_get_chunk_iterator),
-        LIBRARY_SYMBOL(api.get_chunk_size, sf_get_chunk_size),
     };
     lazy_library_load(FULGUR_SNDFILE_SONAME, symbols, sizeof symbols / sizeof symbols[0]);
 }
 
-SNDFILE *sf_open(const char *path, int mode, SF_INFO *info)
+SNDFILE *sf_open_virtual(SF_VIRTUAL_IO *io, int mode, SF_INFO *info, void *user)
 {
     pthread_once(&once, load);
-    return api.open(path, mode, info);
+    return api.open_virtual(io, mode, info, user);
 }
 
 SNDFILE *sf_open_fd(int fd, int mode, SF_INFO *info, int close_desc)
@@ -93,16 +89,4 @@ const char *sf_get_string(SNDFILE *file, int type)
 {
     pthread_once(&once, load);
     return api.get_string(file, type);
-}
-
-SF_CHUNK_ITERATOR *sf_get_chunk_iterator(SNDFILE *file, const SF_CHUNK_INFO *info)
-{
-    pthread_once(&once, load);
-    return api.get_chunk_iterator(file, info);
-}
-
-int sf_get_chunk_size(const SF_CHUNK_ITERATOR *it, SF_CHUNK_INFO *info)
-{
-    pthread_once(&once, load);
-    return api.get_chunk_size(it, info);
 }

@@ -8,7 +8,7 @@
     failed the target, kept so that every run replays them);
   corpus/fulgur_fuzz_wav/ (fuzz_wav.c): WAVs as fulgur and others write
     them (float mono, 16-bit stereo, with fulgur's calibration comment,
-    RF64, truncated).
+    RF64, truncated); beside them, the found_* inputs as above.
 Usage: python3 tests/fuzz/write_seeds.py"""
 import os
 import struct
