@@ -27,6 +27,14 @@ wav() {
 wav '\377\377\377\177' > "$tmp/fast.wav"
 wav '\200\273\000\000' > "$tmp/ok.wav"
 head -c 444 "$tmp/ok.wav" > "$tmp/cut.wav"
+# refused FILE WHAT PATTERN: analyze of $tmp/FILE exits 2 at once (within
+# 20 s), its message matching PATTERN
+refused() {
+    timeout 20 "$fulgur" analyze "$tmp/$1" 2>"$tmp/err" >/dev/null
+    rc=$?
+    [ "$rc" -eq 2 ] || { echo "$2: exit $rc, expected 2 (124: it hung)"; fail=1; }
+    grep -q "$3" "$tmp/err" || { echo "$2: no message naming the fault: $(cat "$tmp/err")"; fail=1; }
+}
 "$fulgur" analyze "$tmp/fast.wav" --spectrogram "$tmp/s.dat" 2>"$tmp/err" >/dev/null
 rc=$?
 fail=0
@@ -46,19 +54,11 @@ grep -q "warning: $tmp/cut.wav is truncated: 100 frames found, 200 declared" "$t
     { echo "truncated file: no warning naming it and its frames: $(cat "$tmp/err")"; fail=1; }
 grep -q "0.002 s" "$tmp/out" || { echo "truncated file: not 100 frames long: $(cat "$tmp/out")"; fail=1; }
 printf 'RIFF\342\000\000\000WAVEfmt \020\000\000\000\003\000\002\000\200\273\000\000\000\334\005\000\010\000 \000LIST6\000\000\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\374\377\377\377\337\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377=\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\377\000INfulguRF64\045\377\377r/\377 ' > "$tmp/list.wav"
-timeout 20 "$fulgur" analyze "$tmp/list.wav" 2>"$tmp/err" >/dev/null
-rc=$?
-[ "$rc" -eq 2 ] || { echo "a LIST chunk past the end: exit $rc, expected 2 (124: it hung)"; fail=1; }
-grep -q "'LIST' chunk at byte 36 claims .* past the file's end (166 bytes)" "$tmp/err" ||
-    { echo "a LIST chunk past the end: no message naming it: $(cat "$tmp/err")"; fail=1; }
+refused list.wav "a LIST chunk past the end" "'LIST' chunk at byte 36 claims .* past the file's end (166 bytes)"
 back='LIST6\000\000\000a\200\000\000\000\000\000\000\001\000\000\000\370\377\377\377?\000\000\200\276\000\000\000>\000\000\000\000\000?\000\200\276\000\000\000>\000\000\000\000\000\000\000?\000\000\200\276\000\000\000>'
 printf 'RIFF\342\000\000\000WAVEfmt \020\000\000\000\003\000\002\000\200\273\000\000\000\334\000\010\005\000 \000'"$back" > "$tmp/back.wav"
 [ "$(wc -c < "$tmp/back.wav")" -eq 98 ] || { echo "back.wav: not the 98-byte file"; fail=1; }
-timeout 20 "$fulgur" analyze "$tmp/back.wav" 2>"$tmp/err" >/dev/null
-rc=$?
-[ "$rc" -eq 2 ] || { echo "a LIST size read backwards: exit $rc, expected 2 (124: it hung)"; fail=1; }
-grep -q "back.wav: it has no 'data' chunk" "$tmp/err" ||
-    { echo "a LIST size read backwards: no message naming the fault: $(cat "$tmp/err")"; fail=1; }
+refused back.wav "a LIST size read backwards" "back.wav: it has no 'data' chunk"
 { cat "$tmp/ok.wav"; printf "$back"; } > "$tmp/after.wav"
 timeout 20 "$fulgur" analyze "$tmp/after.wav" 2>"$tmp/err" >"$tmp/out"
 rc=$?
@@ -66,10 +66,7 @@ rc=$?
 grep -q "0.004 s" "$tmp/out" || { echo "that LIST after the samples: not 200 frames: $(cat "$tmp/out")"; fail=1; }
 { printf 'RF64\377\377\377\377WAVELIST'; head -c 110 /dev/zero | tr '\000' '\377'; printf '\350\350\350\377\377\377'; } > "$tmp/rf64.wav"
 [ "$(wc -c < "$tmp/rf64.wav")" -eq 132 ] || { echo "rf64.wav: not the 132-byte file"; fail=1; }
-timeout 20 "$fulgur" analyze "$tmp/rf64.wav" 2>"$tmp/err" >/dev/null
-rc=$?
-[ "$rc" -eq 2 ] || { echo "an RF64 LIST of 0xFFFFFFFF bytes: exit $rc, expected 2 (124: it hung)"; fail=1; }
-grep -q "'LIST' chunk at byte 12 claims 4294967295 bytes, past the file's end (132 bytes)" "$tmp/err" ||
-    { echo "an RF64 LIST of 0xFFFFFFFF bytes: no message naming it: $(cat "$tmp/err")"; fail=1; }
+refused rf64.wav "an RF64 LIST of 0xFFFFFFFF bytes" \
+    "'LIST' chunk at byte 12 claims 4294967295 bytes, past the file's end (132 bytes)"
 [ "$fail" -eq 0 ] && echo "analyze: the header's rate and length are checked"
 exit "$fail"

@@ -174,75 +174,20 @@ static const unsigned char list_backwards[62] = {
     0x3e, 0,   0,   0,   0,    0,    0x3f, 0,    0x80, 0xbe, 0, 0,    0,    0x3e, 0, 0,
     0,    0,   0,   0,   0,    0x3f, 0,    0,    0x80, 0xbe, 0, 0,    0,    0x3e};
 
-static void test_what_libsndfile_loops_on(void **state)
+/* name, written from bytes, read whole: frames held, declared as given. */
+static void expect_frames(const char *name, const void *bytes, size_t size, size_t frames,
+                          uint64_t declared)
 {
-    (void)state;
-    unsigned char b[2048];
     char err[256] = "";
     wav_file file;
     wav_audio w;
-    /* after 200 frames: not read; the frames are */
-    size_t n = float_wav(b, 36 + 800 + sizeof list_backwards, 800, 800);
-    memcpy(b + n, list_backwards, sizeof list_backwards);
-    write_bytes("after.wav", b, n + sizeof list_backwards);
-    assert_int_equal(read_ours("after.wav", &file, &w, err, sizeof err), 0);
-    assert_int_equal(w.frames, 200);
-    assert_int_equal(w.declared_frames, 200);
-    free(w.samples);
-    /* size "not known", 63 sample bytes that hold that LIST: libsndfile
-     * seeks over the odd pad byte, past the end, which must end its walk,
-     * not put it back among the samples to read them as chunks */
-    n = float_wav(b, UINT32_MAX, UINT32_MAX, 0);
-    memcpy(b + n, list_backwards, sizeof list_backwards);
-    b[n + sizeof list_backwards] = 0;
-    write_bytes("odd.wav", b, n + sizeof list_backwards + 1);
-    assert_int_equal(read_ours("odd.wav", &file, &w, err, sizeof err), 0);
-    assert_int_equal(w.frames, 15);
-    free(w.samples);
-    /* RF64, its first chunk a LIST of 0xFFFFFFFF bytes */
-    memcpy(b, "RF64\xff\xff\xff\xffWAVELIST", 16);
-    memset(b + 16, 0xff, 110);
-    memcpy(b + 126, "\xe8\xe8\xe8\xff\xff\xff", 6);
-    write_bytes("rf64list.wav", b, 132);
-    assert_int_equal(read_ours("rf64list.wav", &file, &w, err, sizeof err), -1);
-    print_message("%s\n", err);
-    assert_non_null(strstr(err, "rf64list.wav: its 'LIST' chunk at byte 12 claims 4294967295 "
-                                "bytes, past the file's end (132 bytes)"));
-}
-
-static void test_sizes(void **state)
-{
-    (void)state;
-    unsigned char b[4096];
-    char err[256] = "";
-    wav_file file;
-    wav_audio w;
-    /* cut short: 200 frames declared, 100 held */
-    size_t n = float_wav(b, 36 + 800, 800, 400);
-    write_bytes("cut.wav", b, n);
-    assert_int_equal(read_ours("cut.wav", &file, &w, err, sizeof err), 0);
-    assert_int_equal(w.frames, 100);
-    assert_int_equal(w.declared_frames, 200);
-    free(w.samples);
-    /* a streaming writer's sizes: to the file's end */
-    n = float_wav(b, UINT32_MAX, UINT32_MAX, 1200);
-    write_bytes("stream.wav", b, n);
-    assert_int_equal(read_ours("stream.wav", &file, &w, err, sizeof err), 0);
-    assert_int_equal(w.frames, 300);
-    assert_int_equal(w.declared_frames, 300);
-    free(w.samples);
-    /* never closed (RIFF 8, data 0), as libsndfile reads it: to the end */
-    n = float_wav(b, 8, 0, 400);
-    write_bytes("unclosed.wav", b, n);
-    assert_int_equal(read_ours("unclosed.wav", &file, &w, err, sizeof err), 0);
-    assert_int_equal(w.frames, 100);
-    free(w.samples);
-    /* no frames, then a chunk claiming past the end: 0 frames */
-    n = float_wav(b, 36, 0, 0);
-    memcpy(b + n, "JUNK\xff\x00\x00\x00", 8);
-    write_bytes("empty.wav", b, n + 8);
-    assert_int_equal(read_ours("empty.wav", &file, &w, err, sizeof err), 0);
-    assert_int_equal(w.frames, 0);
+    write_bytes(name, bytes, size);
+    int rc = read_ours(name, &file, &w, err, sizeof err);
+    if (rc != 0)
+        print_message("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_int_equal(w.frames, frames);
+    assert_int_equal(w.declared_frames, declared);
     free(w.samples);
 }
 
@@ -258,6 +203,49 @@ static void expect_refused(const char *name, const void *bytes, size_t size, con
     path_of(path, sizeof path, name);
     assert_non_null(strstr(err, path));
     assert_non_null(strstr(err, fault));
+}
+
+static void test_what_libsndfile_loops_on(void **state)
+{
+    (void)state;
+    unsigned char b[2048];
+    /* after 200 frames: not read; the frames are */
+    size_t n = float_wav(b, 36 + 800 + sizeof list_backwards, 800, 800);
+    memcpy(b + n, list_backwards, sizeof list_backwards);
+    expect_frames("after.wav", b, n + sizeof list_backwards, 200, 200);
+    /* size "not known", 63 sample bytes that hold that LIST: libsndfile
+     * seeks over the odd pad byte, past the end, which must end its walk,
+     * not put it back among the samples to read them as chunks */
+    n = float_wav(b, UINT32_MAX, UINT32_MAX, 0);
+    memcpy(b + n, list_backwards, sizeof list_backwards);
+    b[n + sizeof list_backwards] = 0;
+    expect_frames("odd.wav", b, n + sizeof list_backwards + 1, 15, 15);
+    /* RF64, its first chunk a LIST of 0xFFFFFFFF bytes */
+    memcpy(b, "RF64\xff\xff\xff\xffWAVELIST", 16);
+    memset(b + 16, 0xff, 110);
+    memcpy(b + 126, "\xe8\xe8\xe8\xff\xff\xff", 6);
+    expect_refused("rf64list.wav", b, 132,
+                   "its 'LIST' chunk at byte 12 claims 4294967295 bytes, past the file's end "
+                   "(132 bytes)");
+}
+
+static void test_sizes(void **state)
+{
+    (void)state;
+    unsigned char b[4096];
+    /* cut short: 200 frames declared, 100 held */
+    size_t n = float_wav(b, 36 + 800, 800, 400);
+    expect_frames("cut.wav", b, n, 100, 200);
+    /* a streaming writer's sizes: to the file's end */
+    n = float_wav(b, UINT32_MAX, UINT32_MAX, 1200);
+    expect_frames("stream.wav", b, n, 300, 300);
+    /* never closed (RIFF 8, data 0), as libsndfile reads it: to the end */
+    n = float_wav(b, 8, 0, 400);
+    expect_frames("unclosed.wav", b, n, 100, 100);
+    /* no frames, then a chunk claiming past the end: 0 frames */
+    n = float_wav(b, 36, 0, 0);
+    memcpy(b + n, "JUNK\xff\x00\x00\x00", 8);
+    expect_frames("empty.wav", b, n + 8, 0, 0);
 }
 
 static void test_refusals(void **state)
