@@ -1,5 +1,6 @@
 /* A WAV opened through a header of our own (wav_file.h). */
 #define _POSIX_C_SOURCE 200809L /* fseeko, ftello */
+#define _FILE_OFFSET_BITS 64    /* and a 64-bit off_t where long is 32 bits */
 #include "wav_file.h"
 
 #include <stdarg.h>
