@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include "core/listener_internal.h"
+#include "core/trajectory_internal.h"
 #include "fulgur/fulgur.h"
 #include "sound/wmwave_internal.h"
 #include "spatial/spherical_head_internal.h"
@@ -366,12 +367,62 @@ static void pose_queue_repeats_at_rest(void **state)
     assert_false(fg_pose_queue_push(&q, &p)); /* the same, velocity not known */
 }
 
+static void absorb(const fg_listener *pose, uint64_t number, void *trajectory)
+{
+    fg_trajectory_push(trajectory, pose, number);
+}
+
+/* A body at rest whose pose is sent again every 10 ms until it moves: the
+ * repeats are held back, and the latest of them is published just before
+ * the first pose that moves, so the path rests until 0.1 s and moves
+ * from there, not from the rest's first pose (0 s to 0.11 s, when the
+ * queue published the move alone). */
+static void pose_queue_rest_until_move(void **state)
+{
+    (void)state;
+    static fg_pose_queue q;
+    fg_listener a = at_rest_at(0, 0);
+    fg_pose_queue_init(&q, &a);
+    for (int k = 1; k <= 10; k++) {
+        fg_listener p = at_rest_at(0, 0.01 * k);
+        assert_false(fg_pose_queue_push(&q, &p));
+    }
+    fg_listener moving = at_rest_at(0.01, 0.11);
+    moving.velocity[0] = 1.0;
+    assert_true(fg_pose_queue_push(&q, &moving));
+    static fg_trajectory path;
+    fg_trajectory_init(&path, &a, 1);
+    uint64_t seen = 1;
+    fg_pose_queue_drain(&q, &seen, absorb, &path);
+    assert_int_equal(seen, 3); /* the rest's latest repeat, then the move */
+    for (int k = 0; k <= 20; k++) {
+        fg_head h;
+        fg_trajectory_head(&path, 0.005 * k, &h);
+        assert_true(h.position[0] == 0.0 && h.velocity[0] == 0.0);
+    }
+    fg_head h;
+    fg_trajectory_head(&path, 0.105, &h);
+    assert_true(h.position[0] > 0.0 && h.position[0] < 0.01 && h.velocity[0] > 0.0);
+    /* a pose that replaces the rest from an earlier time takes no repeat
+     * along: nothing after it rested */
+    fg_listener p = at_rest_at(0.01, 0.12);
+    p.velocity_given = 1;
+    assert_true(fg_pose_queue_push(&q, &p));
+    p.time_s = 0.13;
+    assert_false(fg_pose_queue_push(&q, &p));
+    fg_listener back = at_rest_at(5, 0.125);
+    assert_true(fg_pose_queue_push(&q, &back));
+    fg_pose_queue_drain(&q, &seen, absorb, &path);
+    assert_int_equal(seen, 5);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(moving_listener_any_block),
         cmocka_unit_test(still_listener_any_block),
         cmocka_unit_test(pose_queue_repeats_at_rest),
+        cmocka_unit_test(pose_queue_rest_until_move),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -344,7 +344,9 @@ FG_API FG_NODISCARD fg_result fg_engine_render(fg_engine *engine, float *const *
  * extrapolated along its velocity between frames; a pose at rest
  * republished unchanged costs nothing, but for its first repeat after a
  * move, which stops the head where it rests (a pose at rest with
- * velocity_given stops it at once).
+ * velocity_given stops it at once), and its latest repeat, published
+ * just before the next pose that changes, so that the head rests until
+ * then and moves from there.
  * [any-thread] but not the audio thread: meant for one writer (the frame
  * thread). Overlapping calls from several threads stay correct, but each
  * waits while another is writing, so it is not lock-free among writers.

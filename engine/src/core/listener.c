@@ -115,6 +115,7 @@ void fg_pose_queue_init(fg_pose_queue *q, const fg_listener *pose)
     atomic_init(&q->slot[0].seq, 2u);
     atomic_init(&q->published, 1);
     atomic_init(&q->writing, 0);
+    q->resting = false;
 }
 
 bool fg_listener_at_rest(const fg_listener *p)
@@ -166,6 +167,13 @@ static bool known_to_rest(const fg_pose_queue *q, uint64_t n, const fg_listener 
     return n <= FG_POSE_QUEUE;
 }
 
+/* Writes pose number n + 1 (the writer holding the turn). */
+static void publish(fg_pose_queue *q, uint64_t n, const fg_listener *pose)
+{
+    fg_listener_cell_write(&q->slot[n % FG_POSE_QUEUE], pose);
+    atomic_store_explicit(&q->published, n + 1, memory_order_release);
+}
+
 bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose)
 {
     unsigned idle = 0;
@@ -176,9 +184,14 @@ bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose)
     fg_listener last;
     written(q, n, &last);
     bool same = rests_where(pose, &last) && known_to_rest(q, n, &last);
-    if (!same) {
-        fg_listener_cell_write(&q->slot[n % FG_POSE_QUEUE], pose);
-        atomic_store_explicit(&q->published, n + 1, memory_order_release);
+    if (same && pose->time_s > last.time_s) {
+        q->rest = *pose;
+        q->resting = true;
+    } else if (!same) {
+        if (q->resting && q->rest.time_s < pose->time_s)
+            publish(q, n++, &q->rest);
+        q->resting = false;
+        publish(q, n, pose);
     }
     atomic_store_explicit(&q->writing, 0u, memory_order_release);
     return !same;

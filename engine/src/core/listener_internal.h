@@ -40,6 +40,10 @@ typedef struct fg_pose_queue {
     alignas(FG_CACHE_LINE) atomic_uint_least64_t published; /* poses written so far */
     atomic_uint writing;      /* writers take turns on this word */
     fg_listener_cell slot[FG_POSE_QUEUE];
+    /* the writer holding the turn's: the latest repeat of the newest pose
+     * at rest that was not published (resting), with its later time */
+    fg_listener rest;
+    bool resting;
 } fg_pose_queue;
 
 void fg_listener_cell_init(fg_listener_cell *cell, const fg_listener *pose);
@@ -66,7 +70,12 @@ void fg_pose_queue_init(fg_pose_queue *q, const fg_listener *pose);
  * in time rests in the same place.
  * Nothing the listener hears changes by it. The first repeat of a pose at
  * rest reached by moving is published: the trajectory would otherwise
- * carry the body on along the chord's velocity. [any-thread but audio] */
+ * carry the body on along the chord's velocity. The latest repeat held
+ * back is published just before the next pose that is published, when
+ * earlier than it: the body rests until then and moves from there, not
+ * from the rest's first pose (a pose at rest at 0 s, repeated every 10 ms,
+ * then moving poses from 10.01 s: the path joins 10.00 s to 10.01 s, not
+ * 0 s to 10.01 s). [any-thread but audio] */
 bool fg_pose_queue_push(fg_pose_queue *q, const fg_listener *pose);
 /* The newest pose and its number (poses published before it and it);
  * retries while it is being written. [any-thread but audio] */
