@@ -45,8 +45,11 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
     scene_engine_config(s, &cfg);
     cfg.max_voices = (uint32_t)(s->discharge_count + s->aero_count + s->fire_count);
     cfg.segment_capacity = events > UINT32_MAX ? UINT32_MAX : (uint32_t)events;
-    /* an offline render has no deadline: the bound only keeps each block finite */
+    /* an offline render has no deadline: the bound only keeps each block
+     * finite, and a block takes every voice posted before it, so that no
+     * voice starts later for a shorter block */
     cfg.work_per_frame = FG_WORK_PER_FRAME_MAX;
+    cfg.max_adopt_per_block = cfg.max_voices;
     fg_result r = fg_engine_create(&cfg, &job->engine);
     if (r != FG_OK) {
         snprintf(err, err_size, "engine for %zu discharges and %zu segments: %s",

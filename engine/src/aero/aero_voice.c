@@ -1,23 +1,27 @@
 /* The aero object's voice on the audio thread: adopt and render.
  *
- * For each source and ear, the block's last sample is heard from the
- * emission time tau solving tau = t - |q(t) - o(tau)| / c (q the ear on the
- * listener's path, o the source on the object's); two fixed-point steps
- * from the previous block's tau advanced by the block (off by at most
- * speed / c of it) leave (speed / c)^3 of the block, 2.7 us at Mach 0.1
- * for 128 frames at 48 kHz: a tenth of a sample. There the source's flow, its texture rate u / v0 and the
- * dipole's projection on the ear are evaluated; the texture position is
- * the integral of the rate over emission time (trapezoids, exact at a
- * steady speed). The block's samples interpolate tau, the position and the
- * projections linearly from the block's start, so the pitch follows the
- * Doppler rate d tau / dt and the texture is read at a fractional
- * position. The layout (spatial/layout_internal.h) sends each ear's
- * samples to its channel in stereo; in ambisonics the one ear at the
- * head's centre is encoded from the direction the source is heard from,
- * in the head's frame at the block's two ends, the gains interpolated
- * between them, so a moving source or a turning head pans smoothly.
- * Wait-free and bounded: a fixed number of steps per source and
- * ear, the per-block work bound, no allocation. */
+ * For each source and ear, at every control frame (FG_CONTROL_FRAMES
+ * of the engine clock) the sample there is heard from the emission time
+ * tau solving tau = t - |q(t) - o(tau)| / c (q the ear on the listener's
+ * path, o the source on the object's); two fixed-point steps from the
+ * previous control frame's tau advanced by the interval (off by at most
+ * speed / c of it) leave (speed / c)^3 of the interval, 20 us at Mach 0.1
+ * for 256 frames at 48 kHz: under a sample. There the source's flow, its
+ * texture rate u / v0 and the dipole's projection on the ear are
+ * evaluated; the texture position is the integral of the rate over
+ * emission time (trapezoids, exact at a steady speed). The samples between
+ * two control frames interpolate tau, the position and the projections
+ * linearly, so the pitch follows the Doppler rate d tau / dt and the
+ * texture is read at a fractional position. A block plays the control
+ * intervals it overlaps, each sample as every other block size would: the
+ * sound does not depend on the host's block. The layout
+ * (spatial/layout_internal.h) sends each ear's samples to its channel in
+ * stereo; in ambisonics the one ear at the head's centre is encoded from
+ * the direction the source is heard from, in the head's frame at the
+ * interval's two ends, the gains interpolated between them, so a moving
+ * source or a turning head pans smoothly.
+ * Wait-free and bounded: a fixed number of steps per source, ear and
+ * control frame, the per-block work bound, no allocation. */
 #include <math.h>
 #include <string.h>
 
@@ -56,9 +60,9 @@ static void head_direction(const fg_ears *ears, fg_vec3 q, fg_vec3 o, double dir
 }
 
 /* The flow over source s at emission time tau and what ear q of ears
- * hears of it: fills *out (tau, lookup, coef, dir; position from prev,
- * advanced by the rate), returns the cross-flow speed. */
-static double evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, const fg_ears *ears,
+ * hears of it: fills *out (tau, lookup, coef, dir, the cross-flow speed;
+ * position from prev, advanced by the rate) and *rate_out. */
+static void evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, const fg_ears *ears,
                        unsigned ear, double t_s, double tau_guess, const fg_aero_end *prev,
                        double prev_rate, double c, fg_aero_end *out, double *rate_out)
 {
@@ -109,8 +113,8 @@ static double evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, co
         out->coef[2] = k * fg_v3_dot(d, axial);
     }
     out->position = prev->position + 0.5 * (prev_rate + rate) * (tau - prev->tau_s);
+    out->speed_m_s = speed;
     *rate_out = rate;
-    return speed;
 }
 
 static double unit_clamp(double x)
@@ -128,22 +132,87 @@ static double envelope(const fg_aero_voice *v, double tau)
 static void adopt(void *voice, const fg_block_context *block)
 {
     fg_aero_voice *v = voice;
-    const double fs = block->cfg->sample_rate_hz, c = block->cfg->speed_of_sound_m_s;
-    double t0 = block->start_frame / fs;
+    const double fs = block->cfg->sample_rate_hz;
     fg_pose_queue_drain(&v->queue, &v->poses_seen, absorb, &v->path);
     if (v->emit_s < 0.0)
-        v->emit_s = t0;
+        v->emit_s = block->start_frame / fs;
     v->end_s = v->duration_s > 0.0 ? v->emit_s + v->duration_s : INFINITY;
+    /* nothing is heard before the emission: the sources start at the
+     * control frame at or before it, or before the adoption when that is
+     * later (a voice adopted late); an emission beyond 2^52 frames (3 000
+     * years at 48 kHz) waits there */
+    double from = fmin(fmax(block->start_frame, v->emit_s * fs), 0x1p52);
+    v->control_frame = (uint64_t)(from / FG_CONTROL_FRAMES) * FG_CONTROL_FRAMES;
+    v->started = v->next_ready = false;
+}
+
+/* The ears at control frame `frame`. */
+static void ears_at(const fg_block_context *block, uint64_t frame, fg_ears *out)
+{
+    fg_head head;
+    fg_trajectory_head(block->trajectory, (double)frame / block->cfg->sample_rate_hz, &head);
+    fg_head_ears(&head, block->ears->count, block->cfg->ear_spacing_m, out);
+}
+
+/* The sources' end[] at the voice's first control frame, the texture at
+ * its start. */
+static void start(fg_aero_voice *v, const fg_block_context *block)
+{
+    const double c = block->cfg->speed_of_sound_m_s;
+    const double t = (double)v->control_frame / block->cfg->sample_rate_hz;
+    fg_ears ears;
+    ears_at(block, v->control_frame, &ears);
     for (uint32_t i = 0; i < v->source_count; i++) {
         fg_aero_source_state *s = &v->source[i];
-        for (unsigned ch = 0; ch < block->ears->count; ch++) {
-            fg_aero_end start = {.tau_s = t0, .lookup = {.weight = {1.0f, 0.0f}, .lift_sign = 1.0f}};
-            double rate;
-            (void)evaluate(v, s, block->ears, ch, t0, t0, &start, 0.0, c, &s->end[ch], &rate);
+        for (unsigned ch = 0; ch < ears.count; ch++) {
+            fg_aero_end from = {.tau_s = t, .lookup = {.weight = {1.0f, 0.0f}, .lift_sign = 1.0f}};
+            evaluate(v, s, &ears, ch, t, t, &from, 0.0, c, &s->end[ch], &s->rate[ch]);
             s->end[ch].position = 0.0;
-            s->rate[ch] = rate;
         }
     }
+    v->started = true;
+}
+
+static bool end_finite(const fg_aero_end *e)
+{
+    return isfinite(e->tau_s) && isfinite(e->position) && isfinite(e->coef[0]) &&
+           isfinite(e->coef[1]) && isfinite(e->coef[2]);
+}
+
+/* The sources' next[], at the control frame after end[]'s; false when one
+ * is not finite. */
+static bool evaluate_next(fg_aero_voice *v, const fg_block_context *block)
+{
+    const double fs = block->cfg->sample_rate_hz, c = block->cfg->speed_of_sound_m_s;
+    const uint64_t frame = v->control_frame + FG_CONTROL_FRAMES;
+    const double t0 = (double)v->control_frame / fs, t1 = (double)frame / fs;
+    fg_ears ears;
+    ears_at(block, frame, &ears);
+    for (uint32_t i = 0; i < v->source_count; i++) {
+        fg_aero_source_state *s = &v->source[i];
+        for (unsigned ch = 0; ch < ears.count; ch++) {
+            evaluate(v, s, &ears, ch, t1, s->end[ch].tau_s + (t1 - t0), &s->end[ch], s->rate[ch],
+                     c, &s->next[ch], &s->next_rate[ch]);
+            if (!end_finite(&s->next[ch]))
+                return false;
+        }
+    }
+    v->next_ready = true;
+    return true;
+}
+
+/* Moves the sources on to the next control frame (next_ready). */
+static void step(fg_aero_voice *v, unsigned ears)
+{
+    for (uint32_t i = 0; i < v->source_count; i++) {
+        fg_aero_source_state *s = &v->source[i];
+        for (unsigned ch = 0; ch < ears; ch++) {
+            s->end[ch] = s->next[ch];
+            s->rate[ch] = s->next_rate[ch];
+        }
+    }
+    v->control_frame += FG_CONTROL_FRAMES;
+    v->next_ready = false;
 }
 
 /* Weight per distinct texture direction of the two ends' lookups. */
@@ -172,19 +241,22 @@ static void mix_add(direction_mix *m, uint32_t index, float weight, const double
 
 /* Where one source and ear's samples go: count output channels, each
  * into its band's bus `near[c]` and, split by the voice's next_share, the
- * next band's `far[c]` (NULL when unshared), with the layout's gain
- * moving linearly from g0[c] at the block's start to g1[c] at its end. */
+ * next band's `far[c]` (NULL when unshared), from the sample the block
+ * plays first, with the layout's gain moving linearly from g0[c] at the
+ * interval's start to g1[c] at its end. */
 typedef struct aero_outputs {
     unsigned count;
     float *near[FG_LAYOUT_CHANNELS_MAX], *far[FG_LAYOUT_CHANNELS_MAX];
     double g0[FG_LAYOUT_CHANNELS_MAX], g1[FG_LAYOUT_CHANNELS_MAX];
 } aero_outputs;
 
-/* The outputs of ear ch between ends e0 and e1: in stereo its own channel
- * with gain 1; in ambisonics every channel, with the harmonics of the
- * directions at the two ends (a channel that is 0 at both is left out). */
+/* The outputs of ear ch between ends e0 and e1, from frame `at` of the
+ * block: in stereo its own channel with gain 1; in ambisonics every
+ * channel, with the harmonics of the directions at the two ends (a
+ * channel that is 0 at both is left out). */
 static void outputs_for(const fg_aero_voice *v, const fg_block_context *block, unsigned ch,
-                        const fg_aero_end *e0, const fg_aero_end *e1, aero_outputs *out)
+                        const fg_aero_end *e0, const fg_aero_end *e1, uint32_t at,
+                        aero_outputs *out)
 {
     double g0[FG_LAYOUT_CHANNELS_MAX], g1[FG_LAYOUT_CHANNELS_MAX];
     unsigned first0, first1;
@@ -195,16 +267,18 @@ static void outputs_for(const fg_aero_voice *v, const fg_block_context *block, u
         if (g0[c] == 0.0 && g1[c] == 0.0)
             continue;
         unsigned k = out->count++;
-        out->near[k] = fg_bus_pre(block->buses, v->bus, first0 + c);
-        out->far[k] = v->next_share > 0.0 ? fg_bus_pre(block->buses, v->bus + 1, first0 + c) : NULL;
+        out->near[k] = fg_bus_pre(block->buses, v->bus, first0 + c) + at;
+        out->far[k] =
+            v->next_share > 0.0 ? fg_bus_pre(block->buses, v->bus + 1, first0 + c) + at : NULL;
         out->g0[k] = g0[c];
         out->g1[k] = g1[c];
     }
 }
 
-/* Adds the samples between ends e0 and e1 of source s into out. */
+/* Adds samples from .. from + count - 1 of the interval between ends e0
+ * and e1 of source s into out. */
 static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg_aero_end *e0,
-                 const fg_aero_end *e1, uint32_t frames, const aero_outputs *out)
+                 const fg_aero_end *e1, uint32_t from, uint32_t count, const aero_outputs *out)
 {
     const double w_far = v->next_share, w_near = 1.0 - w_far;
     direction_mix m = {.count = 0};
@@ -214,7 +288,7 @@ static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg
     }
     const fg_aero_texture_desc *t = v->tex;
     const uint32_t comps = t->components;
-    const double inv = 1.0 / frames;
+    const double inv = 1.0 / FG_CONTROL_FRAMES;
     /* tau runs monotonically from e0 to e1: inside the steady part at both
      * ends, it is inside between */
     const bool steady = envelope(v, e0->tau_s) == 1.0 && envelope(v, e1->tau_s) == 1.0;
@@ -223,8 +297,8 @@ static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg
         const uint32_t f = dir->frames;
         const float *g = dir->samples + (size_t)s->texture_source * f * comps;
         double base = floor(e0->position / f) * f;
-        for (uint32_t n = 0; n < frames; n++) {
-            double u = n * inv;
+        for (uint32_t j = 0; j < count; j++) {
+            double u = (from + j) * inv;
             double tau = e0->tau_s + (e1->tau_s - e0->tau_s) * u;
             double env = steady ? 1.0 : envelope(v, tau);
             if (env <= 0.0)
@@ -246,73 +320,97 @@ static void play(const fg_aero_voice *v, const fg_aero_source_state *s, const fg
             for (unsigned c = 0; c < out->count; c++) {
                 double gain = out->g0[c] + (out->g1[c] - out->g0[c]) * u;
                 if (out->far[c])
-                    out->far[c][n] += (float)(gain * w_far * env * p);
-                out->near[c][n] += (float)(gain * w_near * env * p);
+                    out->far[c][j] += (float)(gain * w_far * env * p);
+                out->near[c][j] += (float)(gain * w_near * env * p);
             }
         }
     }
 }
 
-static bool end_finite(const fg_aero_end *e)
+/* Plays frames at .. at + count - 1 of the block, which lie in the
+ * interval from the voice's control frame: each source and ear that sounds
+ * there, as the work bound allows. Notes the speeds heard. */
+static void play_interval(fg_aero_voice *v, const fg_block_context *block, uint32_t at,
+                          uint32_t count, double *fastest, bool *beyond)
 {
-    return isfinite(e->tau_s) && isfinite(e->position) && isfinite(e->coef[0]) &&
-           isfinite(e->coef[1]) && isfinite(e->coef[2]);
+    const fg_aero_texture_desc *t = v->tex;
+    const uint32_t from = (uint32_t)((uint64_t)block->start_frame + at - v->control_frame);
+    const uint64_t units = 1 + count / WORK_SAMPLES;
+    for (uint32_t i = 0; i < v->source_count; i++) {
+        const fg_aero_source_state *s = &v->source[i];
+        for (unsigned ch = 0; ch < block->ears->count; ch++) {
+            const fg_aero_end *e0 = &s->end[ch], *e1 = &s->next[ch];
+            if (!(envelope(v, e1->tau_s) > 0.0 || envelope(v, e0->tau_s) > 0.0))
+                continue;
+            if (e1->speed_m_s * t->reference_m / t->viscosity_m2_s > FG_AERO_RE_MAX)
+                *beyond = true;
+            *fastest = fmax(*fastest, e1->speed_m_s);
+            aero_outputs out;
+            outputs_for(v, block, ch, e0, e1, at, &out);
+            const uint64_t cost = units * (out.count > 0 ? out.count : 1);
+            if (*block->work_left >= cost) {
+                *block->work_left -= cost;
+                play(v, s, e0, e1, from, count, &out);
+            } else {
+                fg_count(&block->counters->skipped_work, cost);
+            }
+        }
+    }
+}
+
+/* Whether every source and ear is past the fade out at the block's last
+ * control frame (ends e of each source). */
+static bool all_past(const fg_aero_voice *v, unsigned ears, bool at_next)
+{
+    for (uint32_t i = 0; i < v->source_count; i++)
+        for (unsigned ch = 0; ch < ears; ch++) {
+            const fg_aero_end *e = at_next ? &v->source[i].next[ch] : &v->source[i].end[ch];
+            if (!(e->tau_s >= v->end_s + FG_AERO_FADE_S))
+                return false;
+        }
+    return true;
 }
 
 static bool render(void *voice, bool stopping, const fg_block_context *block)
 {
     fg_aero_voice *v = voice;
-    const double fs = block->cfg->sample_rate_hz, c = block->cfg->speed_of_sound_m_s;
-    const double t0 = block->start_frame / fs, t1 = (block->start_frame + block->frames) / fs;
+    const double t0 = block->start_frame / block->cfg->sample_rate_hz;
+    const unsigned ears = block->ears->count;
+    const uint64_t first = (uint64_t)block->start_frame, last = first + block->frames;
     fg_pose_queue_drain(&v->queue, &v->poses_seen, absorb, &v->path);
     fg_trajectory_forget(&v->path, t0);
-    double oldest_tau = INFINITY;
-    for (uint32_t i = 0; i < v->source_count; i++)
-        for (unsigned ch = 0; ch < block->ears->count; ch++)
-            oldest_tau = fmin(oldest_tau, v->source[i].end[ch].tau_s);
-    fg_aero_voice_take_wind(v, oldest_tau, t0);
     if (stopping && !(v->end_s < INFINITY))
         v->end_s = fmax(t0, v->emit_s);
-    fg_head head;
-    fg_trajectory_head(block->trajectory, t1, &head);
-    fg_ears ears;
-    fg_head_ears(&head, block->ears->count, block->cfg->ear_spacing_m, &ears);
-
-    const fg_aero_texture_desc *t = v->tex;
-    const uint64_t units = 1 + block->frames / WORK_SAMPLES;
-    bool beyond = false, done = true;
-    double fastest = 0.0;
-    for (uint32_t i = 0; i < v->source_count; i++) {
-        fg_aero_source_state *s = &v->source[i];
-        for (unsigned ch = 0; ch < ears.count; ch++) {
-            fg_aero_end e1;
-            double rate;
-            double speed = evaluate(v, s, &ears, ch, t1, s->end[ch].tau_s + (t1 - t0),
-                                    &s->end[ch], s->rate[ch], c, &e1, &rate);
-            if (!end_finite(&e1)) {
-                fg_count(&block->counters->non_finite_voices, 1);
-                return true;
-            }
-            bool sounding = envelope(v, e1.tau_s) > 0.0 || envelope(v, s->end[ch].tau_s) > 0.0;
-            if (sounding) {
-                if (speed * t->reference_m / t->viscosity_m2_s > FG_AERO_RE_MAX)
-                    beyond = true;
-                fastest = fmax(fastest, speed);
-                aero_outputs out;
-                outputs_for(v, block, ch, &s->end[ch], &e1, &out);
-                const uint64_t cost = units * (out.count > 0 ? out.count : 1);
-                if (*block->work_left >= cost) {
-                    *block->work_left -= cost;
-                    play(v, s, &s->end[ch], &e1, block->frames, &out);
-                } else {
-                    fg_count(&block->counters->skipped_work, cost);
-                }
-            }
-            if (!(e1.tau_s >= v->end_s + FG_AERO_FADE_S))
-                done = false;
-            s->end[ch] = e1;
-            s->rate[ch] = rate;
+    if (!v->started) {
+        if (last <= v->control_frame) {
+            fg_count(&v->blocks, 1);
+            return false; /* before the emission */
         }
+        start(v, block);
+    }
+    if (v->next_ready && first >= v->control_frame + FG_CONTROL_FRAMES)
+        step(v, ears);
+    double oldest_tau = INFINITY;
+    for (uint32_t i = 0; i < v->source_count; i++)
+        for (unsigned ch = 0; ch < ears; ch++)
+            oldest_tau = fmin(oldest_tau, v->source[i].end[ch].tau_s);
+    fg_aero_voice_take_wind(v, oldest_tau, t0);
+
+    double fastest = 0.0;
+    bool beyond = false;
+    /* frames before the first control frame hear nothing yet */
+    uint64_t at = first > v->control_frame ? first : v->control_frame;
+    while (at < last) {
+        if (at >= v->control_frame + FG_CONTROL_FRAMES)
+            step(v, ears);
+        if (!v->next_ready && !evaluate_next(v, block)) {
+            fg_count(&block->counters->non_finite_voices, 1);
+            return true;
+        }
+        uint64_t to = v->control_frame + FG_CONTROL_FRAMES;
+        to = to < last ? to : last;
+        play_interval(v, block, (uint32_t)(at - first), (uint32_t)(to - at), &fastest, &beyond);
+        at = to;
     }
     fg_count(&v->blocks, 1);
     if (beyond)
@@ -320,7 +418,8 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
     uint64_t um = (uint64_t)(fmin(fastest, 1e9) * 1e6);
     if (um > atomic_load_explicit(&v->max_speed_um_s, memory_order_relaxed))
         atomic_store_explicit(&v->max_speed_um_s, um, memory_order_relaxed);
-    return done;
+    return v->next_ready &&
+           all_past(v, ears, last == v->control_frame + FG_CONTROL_FRAMES);
 }
 
 const fg_source_ops fg_aero_ops = {

@@ -4,12 +4,15 @@
  * The frame thread publishes the object's poses into the voice's own pose
  * queue, as fg_listener records (forward: the normal, up: axis x normal,
  * so the trajectory's right is the axis); the audio thread absorbs them
- * into the voice's own fg_trajectory, the listener's interpolation. Each
- * block, for every source and ear, the emission time of the block's last
- * sample is solved from the two trajectories, the texture position
- * advanced to it, and the samples between read with the emission time,
+ * into the voice's own fg_trajectory, the listener's interpolation. At
+ * every FG_CONTROL_FRAMES-th frame of the engine clock, for every
+ * source and ear, the emission time heard there is solved from the two
+ * trajectories and the texture position advanced to it; the samples
+ * between two such control frames are read with the emission time,
  * texture position and the dipole's projections on the ear interpolated
- * from the block's start (aero_voice.c). */
+ * linearly (aero_voice.c). The control frames are the clock's, not the
+ * host's blocks: a render does not depend on the block it is rendered
+ * in. */
 #ifndef FULGUR_AERO_VOICE_INTERNAL_H
 #define FULGUR_AERO_VOICE_INTERNAL_H
 
@@ -23,8 +26,8 @@
 #include "fulgur/aero.h"
 #include "fulgur/aero_object.h"
 
-/* Where one source stands for one ear at one emission time: the block's
- * end, which is the next block's start. */
+/* Where one source stands for one ear at one emission time: a control
+ * frame, the end of one interpolation and the start of the next. */
 typedef struct fg_aero_end {
     double tau_s;      /* emission time heard at the ear */
     double position;   /* texture position, in texture frames */
@@ -34,14 +37,17 @@ typedef struct fg_aero_end {
     double dir[3];     /* unit, the head's frame at the hearing time (x ahead,
                           y left, z up): where the wave comes from, for the
                           layout's gains (spatial/layout_internal.h) */
+    double speed_m_s;  /* the cross-flow's there */
 } fg_aero_end;
 
 typedef struct fg_aero_source_state {
     double along_m;    /* from the origin along the axis */
     double span_m;     /* 2-D: the span it stands for; 3-D: 1 */
     uint32_t texture_source;
-    fg_aero_end end[2]; /* per ear */
-    double rate[2];     /* texture frames per second of emission time there */
+    fg_aero_end end[2];  /* per ear, at the voice's control frame */
+    double rate[2];      /* texture frames per second of emission time there */
+    fg_aero_end next[2]; /* at the control frame after it, once next_ready */
+    double next_rate[2];
 } fg_aero_source_state;
 
 /* The frame thread's latest wind for the audio thread: a triple buffer.
@@ -78,7 +84,12 @@ typedef struct fg_aero_voice {
     double emit_s;             /* engine clock of the emission's start */
     double end_s;              /* of its end (the start of the fade out); INFINITY until known */
     double duration_s;
-    bool adopted_once;
+    /* audio thread: the sources' end[] are at control_frame once started
+     * (from the control frame at or before the emission, or the adoption
+     * when that is later), and their next[] at the one after once
+     * next_ready */
+    uint64_t control_frame;
+    bool started, next_ready;
     uint32_t source_count;
     fg_aero_source_state source[FG_AERO_OBJECT_MAX_SOURCES];
     /* read by other threads */
