@@ -7,7 +7,8 @@
 # bin against log f over 400 Hz .. 8 kHz within alpha +- 0.25) for the
 # campfire (3) and the flame jet (2.5); the torch is loudest as it passes
 # (4 s); in the storm the strike's thunder comes first and the tree's
-# fire after its arrival (0.6 s + 300 m / 343 m/s = 1.475 s).
+# fire after its arrival (0.6 s + 300 m / 343 m/s = 1.475 s); the moving
+# torch renders to the same bytes whatever the block.
 set -u
 fulgur=$1
 dir=$2
@@ -74,4 +75,18 @@ if render storm_tree_fire && cp "$tmp/storm_tree_fire.wav" "$tmp/both.wav" &&
         exit !(b >= 1.30 && b < 1.45 && f >= 1.46 && f < 1.60)}' ||
         { echo "storm: the thunder at $both s, the fire from $fire s"; fail=1; }
 fi
+# the block a host renders in changes nothing: the torch, carried past
+# the listener, to the byte at 64, 256 (the default) and 1000 frames
+for block in 64 256 1000; do
+    "$fulgur" render "$dir/torch.json" -o "$tmp/torch@$block.wav" --set duration=1 \
+        --set block=$block >/dev/null 2>&1 || { echo "torch: render at $block failed"; fail=1; }
+done
+for block in 64 1000; do
+    if cmp -s "$tmp/torch@256.wav" "$tmp/torch@$block.wav"; then
+        echo "torch: the same bytes at blocks of 256 and $block"
+    else
+        echo "torch: blocks of 256 and $block render differently"
+        fail=1
+    fi
+done
 exit $fail

@@ -26,7 +26,8 @@
 #include "fulgur/fire_voice.h"
 #include "spatial/layout_internal.h"
 
-/* One ear at the block's end (the next block's start). */
+/* One ear at a control frame (FG_CONTROL_FRAMES): the end of one
+ * interpolation and the start of the next. */
 typedef struct fg_fire_end {
     double tau_s;                    /* emission time heard there */
     double gain;                     /* g / r */
@@ -51,8 +52,12 @@ typedef struct fg_fire_voice_state {
     double next_share;         /* the share of the next band */
     double emit_s;             /* engine clock of stream frame 0 */
     unsigned ears;
-    fg_fire_end end[2];
-    double envelope;           /* the fade, 0 .. 1, at the block's end */
+    /* audio thread: each ear at control_frame (at or before the adoption's
+     * block), and at the control frame after it once next_ready */
+    uint64_t control_frame;
+    fg_fire_end end[2], next[2];
+    bool next_ready;
+    double envelope;           /* the fade, 0 .. 1, at the last frame played */
     bool dry;                  /* audio thread: faded out for want of samples */
     uint64_t covered;          /* audio thread: stream frames whose time has passed */
     uint64_t released;         /* audio thread: the ring's frames before it let go */

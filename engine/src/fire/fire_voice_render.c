@@ -1,21 +1,24 @@
 /* The fire voice on the audio thread: adopt and render.
  *
- * For each ear the block's last sample is heard from the emission time
- * tau solving tau = t - (|q(t) - o(tau)| + e) / c, q the ear on the
- * listener's path, o the fire on its own, e the way around the head
+ * For each ear the sample at every control frame (FG_CONTROL_FRAMES of
+ * the engine clock) is heard from the emission time tau solving tau = t -
+ * (|q(t) - o(tau)| + e) / c, q the ear on the listener's path, o the fire
+ * on its own, e the way around the head
  * (spatial/spherical_head_internal.h): two fixed-point steps from the
- * previous block's tau advanced by the block leave (speed / c)^3 of the
- * block's error. The samples between interpolate tau, the gain g / r and
- * the layout's gains linearly from the block's start and read the ring at
- * the stream frame (tau - emit) fs by a Catmull-Rom cubic, so the pitch
- * follows d tau / dt (Doppler) and a moving fire is click-free.
+ * previous control frame's tau advanced by the interval leave (speed /
+ * c)^3 of the interval's error. The samples between interpolate tau, the
+ * gain g / r and the layout's gains linearly and read the ring at the
+ * stream frame (tau - emit) fs by a Catmull-Rom cubic, so the pitch
+ * follows d tau / dt (Doppler) and a moving fire is click-free. A block
+ * plays the intervals it overlaps, each piece as a block of its own: what
+ * is heard does not depend on the host's block.
  *
- * The ring: the block's frames must be pushed, and the look-ahead beyond
+ * The ring: a piece's frames must be pushed, and the look-ahead beyond
  * them, or the voice fades out (FG_FIRE_FADE_S) and stays silent until
  * they are; the frames of emission time that pass unpushed are counted.
- * Wait-free and bounded: a fixed number of steps per ear, one pass over
- * the block per ear and output channel, the per-block work bound, no
- * allocation. */
+ * Wait-free and bounded: a fixed number of steps per ear and control
+ * frame, one pass over the block per ear and output channel, the
+ * per-block work bound, no allocation. */
 #include <math.h>
 #include <string.h>
 
@@ -93,10 +96,15 @@ static void adopt(void *voice, const fg_block_context *block)
 {
     fg_fire_voice_state *v = voice;
     const double fs = block->cfg->sample_rate_hz, c = block->cfg->speed_of_sound_m_s;
-    const double t0 = block->start_frame / fs;
     fg_pose_queue_drain(&v->queue, &v->poses_seen, absorb, &v->path);
     if (v->emit_s < 0.0)
-        v->emit_s = t0;
+        v->emit_s = block->start_frame / fs;
+    /* from the control frame at or before the block (one no block
+     * reaches beyond 2^52 frames, 3 000 years at 48 kHz) */
+    double from = fmin(block->start_frame, 0x1p52);
+    v->control_frame = (uint64_t)(from / FG_CONTROL_FRAMES) * FG_CONTROL_FRAMES;
+    v->next_ready = false;
+    const double t0 = (double)v->control_frame / fs;
     fg_ears ears;
     ears_at(block, v->ears, t0, &ears);
     for (unsigned k = 0; k < v->ears; k++) {
@@ -146,30 +154,54 @@ static bool end_finite(const fg_fire_end *e)
     return true;
 }
 
-static bool render(void *voice, bool stopping, const fg_block_context *block)
+/* Each ear at the control frame after end[]'s; false when one is not
+ * finite. */
+static bool evaluate_next(fg_fire_voice_state *v, const fg_block_context *block)
 {
-    fg_fire_voice_state *v = voice;
-    const fg_engine_config *cfg = block->cfg;
-    const double fs = cfg->sample_rate_hz;
-    const double t0 = block->start_frame / fs, t1 = (block->start_frame + block->frames) / fs;
-    fg_pose_queue_drain(&v->queue, &v->poses_seen, absorb, &v->path);
-    double heard = INFINITY; /* the earliest emission time an ear still hears */
-    for (unsigned k = 0; k < v->ears; k++)
-        heard = fmin(heard, v->end[k].tau_s);
-    fg_trajectory_forget(&v->path, heard);
+    const double fs = block->cfg->sample_rate_hz;
+    const double t0 = (double)v->control_frame / fs;
+    const double t1 = (double)(v->control_frame + FG_CONTROL_FRAMES) / fs;
     fg_ears ears;
     ears_at(block, v->ears, t1, &ears);
-    fg_fire_end e1[2];
-    double x0[2], x1[2], hi = -INFINITY;
     for (unsigned k = 0; k < v->ears; k++) {
-        evaluate(v, cfg, &ears, k, t1, v->end[k].tau_s + (t1 - t0), RETARDED_STEPS, &e1[k]);
-        if (!end_finite(&e1[k])) {
-            fg_count(&block->counters->non_finite_voices, 1);
-            return true;
-        }
+        evaluate(v, block->cfg, &ears, k, t1, v->end[k].tau_s + (t1 - t0), RETARDED_STEPS,
+                 &v->next[k]);
+        if (!end_finite(&v->next[k]))
+            return false;
+    }
+    v->next_ready = true;
+    return true;
+}
+
+/* On to the next control frame (next_ready). */
+static void step(fg_fire_voice_state *v)
+{
+    for (unsigned k = 0; k < v->ears; k++)
+        v->end[k] = v->next[k];
+    v->control_frame += FG_CONTROL_FRAMES;
+    v->next_ready = false;
+}
+
+/* Plays frames at .. at + count - 1 of the block, which lie in the
+ * interval from the control frame, as a block of their own: the ring's
+ * frames they need, the fade, the samples, the frames let go. Returns
+ * true once the voice is done. */
+static bool play_piece(fg_fire_voice_state *v, bool stopping, const fg_block_context *block,
+                       uint32_t at, uint32_t count)
+{
+    const double fs = block->cfg->sample_rate_hz;
+    const double inv = 1.0 / FG_CONTROL_FRAMES;
+    const uint32_t from = (uint32_t)((uint64_t)block->start_frame + at - v->control_frame);
+    const bool to_next = from + count == FG_CONTROL_FRAMES;
+    /* the stream frame each ear reads at the interval's two ends, and at
+     * the piece's (the interval's own where they meet) */
+    double x0[2], x1[2], x_end[2], hi = -INFINITY;
+    for (unsigned k = 0; k < v->ears; k++) {
         x0[k] = (v->end[k].tau_s - v->emit_s) * fs;
-        x1[k] = (e1[k].tau_s - v->emit_s) * fs;
-        hi = fmax(hi, fmax(x0[k], x1[k]));
+        x1[k] = (v->next[k].tau_s - v->emit_s) * fs;
+        double x_start = x0[k] + (x1[k] - x0[k]) * (from * inv);
+        x_end[k] = to_next ? x1[k] : x0[k] + (x1[k] - x0[k]) * ((from + count) * inv);
+        hi = fmax(hi, fmax(x_start, x_end[k]));
     }
     /* the close is read before the head: once closed, the head is final */
     const bool closed = atomic_load_explicit(&v->closed, memory_order_acquire);
@@ -179,9 +211,9 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
     /* the frames whose emission time has now passed: [covered, need) */
     uint64_t need = hi >= 0.0 ? (uint64_t)floor(hi) + 1 : 0;
     if (need > v->covered) {
-        uint64_t from = v->covered > head ? v->covered : head;
-        if (!closed && need > from) {
-            fg_count(&v->underrun_frames, need - from);
+        uint64_t first = v->covered > head ? v->covered : head;
+        if (!closed && need > first) {
+            fg_count(&v->underrun_frames, need - first);
             if (!v->dry)
                 fg_count(&v->underruns, 1);
             v->dry = true;
@@ -190,7 +222,7 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
         }
         v->covered = need;
     }
-    /* play on only while the block's frames and the fade's look-ahead are
+    /* play on only while the piece's frames and the fade's look-ahead are
      * there (a fade down needs at most 2 fade lengths of frames at the
      * fastest Doppler rate, 1 / (1 - 0.29)) */
     const double look = hi + 2.0 + 2.0 * fade + 4.0;
@@ -199,11 +231,10 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
     const double env0 = v->envelope;
     const double taper_end = closed ? (double)head : 0.0;
 
-    const uint64_t units = 1 + block->frames / WORK_SAMPLES;
-    const double inv = 1.0 / block->frames;
+    const uint64_t units = 1 + count / WORK_SAMPLES;
     const double w_far = v->next_share, w_near = 1.0 - w_far;
     for (unsigned k = 0; k < v->ears; k++) {
-        const fg_fire_end *a = &v->end[k], *b = &e1[k];
+        const fg_fire_end *a = &v->end[k], *b = &v->next[k];
         if (env0 == 0.0 && !up)
             break;
         if (*block->work_left < units) {
@@ -214,10 +245,11 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
         for (unsigned j = 0; j < b->count; j++) {
             if (a->layout[j] == 0.0 && b->layout[j] == 0.0)
                 continue;
-            float *near = fg_bus_pre(block->buses, v->bus, b->first + j);
-            float *far = w_far > 0.0 ? fg_bus_pre(block->buses, v->bus + 1, b->first + j) : NULL;
-            for (uint32_t n = 0; n < block->frames; n++) {
-                double u = n * inv;
+            float *near = fg_bus_pre(block->buses, v->bus, b->first + j) + at;
+            float *far =
+                w_far > 0.0 ? fg_bus_pre(block->buses, v->bus + 1, b->first + j) + at : NULL;
+            for (uint32_t n = 0; n < count; n++) {
+                double u = (from + n) * inv;
                 double env = up ? fmin(1.0, env0 + n / fade) : fmax(0.0, env0 - n / fade);
                 if (env == 0.0)
                     continue;
@@ -231,14 +263,11 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
             }
         }
     }
-    v->envelope = up ? fmin(1.0, env0 + block->frames / fade)
-                     : fmax(0.0, env0 - block->frames / fade);
-    for (unsigned k = 0; k < v->ears; k++)
-        v->end[k] = e1[k];
+    v->envelope = up ? fmin(1.0, env0 + count / fade) : fmax(0.0, env0 - count / fade);
     /* let go of what no ear reads again (the cubic's frame before) */
     double low_end = INFINITY;
     for (unsigned k = 0; k < v->ears; k++)
-        low_end = fmin(low_end, x1[k]);
+        low_end = fmin(low_end, x_end[k]);
     double keep = floor(low_end) - 2.0;
     if (keep > 0.0) {
         uint64_t n = (uint64_t)keep;
@@ -250,10 +279,37 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
         }
     }
     atomic_store_explicit(&v->read_frame, (int64_t)floor(fmax(low_end, -9e18)), memory_order_relaxed);
-    fg_count(&v->blocks, 1);
     if (stopping && v->envelope == 0.0)
         return true;
     return closed && low_end >= (double)head + 2.0;
+}
+
+static bool render(void *voice, bool stopping, const fg_block_context *block)
+{
+    fg_fire_voice_state *v = voice;
+    const uint64_t first = (uint64_t)block->start_frame, last = first + block->frames;
+    fg_pose_queue_drain(&v->queue, &v->poses_seen, absorb, &v->path);
+    if (v->next_ready && first >= v->control_frame + FG_CONTROL_FRAMES)
+        step(v);
+    double heard = INFINITY; /* the earliest emission time an ear still hears */
+    for (unsigned k = 0; k < v->ears; k++)
+        heard = fmin(heard, v->end[k].tau_s);
+    fg_trajectory_forget(&v->path, heard);
+    bool done = false;
+    for (uint64_t at = first; at < last && !done;) {
+        if (at >= v->control_frame + FG_CONTROL_FRAMES)
+            step(v);
+        if (!v->next_ready && !evaluate_next(v, block)) {
+            fg_count(&block->counters->non_finite_voices, 1);
+            return true;
+        }
+        uint64_t to = v->control_frame + FG_CONTROL_FRAMES;
+        to = to < last ? to : last;
+        done = play_piece(v, stopping, block, (uint32_t)(at - first), (uint32_t)(to - at));
+        at = to;
+    }
+    fg_count(&v->blocks, 1);
+    return done;
 }
 
 const fg_source_ops fg_fire_ops = {
