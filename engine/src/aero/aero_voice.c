@@ -63,8 +63,8 @@ static void head_direction(const fg_ears *ears, fg_vec3 q, fg_vec3 o, double dir
  * hears of it: fills *out (tau, lookup, coef, dir, the cross-flow speed;
  * position from prev, advanced by the rate) and *rate_out. */
 static void evaluate(const fg_aero_voice *v, const fg_aero_source_state *s, const fg_ears *ears,
-                       unsigned ear, double t_s, double tau_guess, const fg_aero_end *prev,
-                       double prev_rate, double c, fg_aero_end *out, double *rate_out)
+                     unsigned ear, double t_s, double tau_guess, const fg_aero_end *prev,
+                     double prev_rate, double c, fg_aero_end *out, double *rate_out)
 {
     const fg_vec3 q = fg_v3_load(ears->pos[ear]);
     fg_head h;
@@ -191,8 +191,8 @@ static bool evaluate_next(fg_aero_voice *v, const fg_block_context *block)
     for (uint32_t i = 0; i < v->source_count; i++) {
         fg_aero_source_state *s = &v->source[i];
         for (unsigned ch = 0; ch < ears.count; ch++) {
-            evaluate(v, s, &ears, ch, t1, s->end[ch].tau_s + (t1 - t0), &s->end[ch], s->rate[ch],
-                     c, &s->next[ch], &s->next_rate[ch]);
+            evaluate(v, s, &ears, ch, t1, s->end[ch].tau_s + (t1 - t0), &s->end[ch], s->rate[ch], c,
+                     &s->next[ch], &s->next_rate[ch]);
             if (!end_finite(&s->next[ch]))
                 return false;
         }
@@ -358,8 +358,9 @@ static void play_interval(fg_aero_voice *v, const fg_block_context *block, uint3
     }
 }
 
-/* Whether every source and ear is past the fade out at the block's last
- * control frame (ends e of each source). */
+/* Whether every source and ear is past the fade out at the last control
+ * frame the block reached: next[] (at_next: the block ends on it), else
+ * end[]. Emission time only grows, so nothing after it sounds. */
 static bool all_past(const fg_aero_voice *v, unsigned ears, bool at_next)
 {
     for (uint32_t i = 0; i < v->source_count; i++)
@@ -418,8 +419,7 @@ static bool render(void *voice, bool stopping, const fg_block_context *block)
     uint64_t um = (uint64_t)(fmin(fastest, 1e9) * 1e6);
     if (um > atomic_load_explicit(&v->max_speed_um_s, memory_order_relaxed))
         atomic_store_explicit(&v->max_speed_um_s, um, memory_order_relaxed);
-    return v->next_ready &&
-           all_past(v, ears, last == v->control_frame + FG_CONTROL_FRAMES);
+    return v->next_ready && all_past(v, ears, last == v->control_frame + FG_CONTROL_FRAMES);
 }
 
 const fg_source_ops fg_aero_ops = {

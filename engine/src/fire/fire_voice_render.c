@@ -278,7 +278,8 @@ static bool play_piece(fg_fire_voice_state *v, bool stopping, const fg_block_con
             fg_sample_ring_release_before(v->ring, n);
         }
     }
-    atomic_store_explicit(&v->read_frame, (int64_t)floor(fmax(low_end, -9e18)), memory_order_relaxed);
+    atomic_store_explicit(&v->read_frame, (int64_t)floor(fmax(low_end, -9e18)),
+                          memory_order_relaxed);
     if (stopping && v->envelope == 0.0)
         return true;
     return closed && low_end >= (double)head + 2.0;
