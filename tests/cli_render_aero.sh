@@ -15,6 +15,7 @@ trap 'rm -rf "$tmp"' EXIT
 fail=0
 
 . "$(dirname "$0")/dominant_band.sh"
+. "$(dirname "$0")/same_at_blocks.sh"
 
 # wires in a steady 9 m/s wind: the texture's frequency at 10 m/s, x 0.9
 "$fulgur" render "$dir/wind_wires.json" -o "$tmp/wires.wav" --set wind.gust=0 --set duration=1 \
@@ -63,21 +64,8 @@ awk '$1 !~ /#/ {a = $3 > -$2 ? $3 : -$2; if ($1 < 2.5) {if (a > w) w = a} else i
           printf "fence_storm: bars %.1f dB SPL before 2.5 s, thunder %.1f dB SPL after\n", w, t;
           exit !(w >= 60 && w <= 105 && t > w + 10)}' "$tmp/fence.dat" ||
     { echo "fence_storm: the bars or the thunder out of range"; fail=1; }
-# the block a host renders in changes nothing: the swinging sword and the
-# nine bars (posted in one block, more than the engine adopts in one by
-# default) to the byte at 64, 256 (the default) and 1000 frames
-for scene in sword_swing fence_storm; do
-    for block in 64 256 1000; do
-        "$fulgur" render "$dir/$scene.json" -o "$tmp/$scene@$block.wav" --set duration=1 \
-            --set block=$block >/dev/null 2>&1 || { echo "$scene: render at $block failed"; fail=1; }
-    done
-    for block in 64 1000; do
-        if cmp -s "$tmp/$scene@256.wav" "$tmp/$scene@$block.wav"; then
-            echo "$scene: the same bytes at blocks of 256 and $block"
-        else
-            echo "$scene: blocks of 256 and $block render differently"
-            fail=1
-        fi
-    done
-done
+# the swinging sword and the nine bars (posted in one block, more than the
+# engine adopts in one by default)
+same_at_blocks "$dir/sword_swing.json" sword_swing
+same_at_blocks "$dir/fence_storm.json" fence_storm
 exit $fail

@@ -15,6 +15,7 @@ dir=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0
+. "$(dirname "$0")/same_at_blocks.sh"
 
 render() { # name [--set ...]
     name=$1
@@ -75,18 +76,6 @@ if render storm_tree_fire && cp "$tmp/storm_tree_fire.wav" "$tmp/both.wav" &&
         exit !(b >= 1.30 && b < 1.45 && f >= 1.46 && f < 1.60)}' ||
         { echo "storm: the thunder at $both s, the fire from $fire s"; fail=1; }
 fi
-# the block a host renders in changes nothing: the torch, carried past
-# the listener, to the byte at 64, 256 (the default) and 1000 frames
-for block in 64 256 1000; do
-    "$fulgur" render "$dir/torch.json" -o "$tmp/torch@$block.wav" --set duration=1 \
-        --set block=$block >/dev/null 2>&1 || { echo "torch: render at $block failed"; fail=1; }
-done
-for block in 64 1000; do
-    if cmp -s "$tmp/torch@256.wav" "$tmp/torch@$block.wav"; then
-        echo "torch: the same bytes at blocks of 256 and $block"
-    else
-        echo "torch: blocks of 256 and $block render differently"
-        fail=1
-    fi
-done
+# the torch, carried past the listener
+same_at_blocks "$dir/torch.json" torch
 exit $fail
