@@ -1074,8 +1074,8 @@ static void any_block_same_samples(void **state)
         fg_aero_object o = rod(t, pivot, 0.0);
         o.start_m = r - 0.02, o.end_m = r + 0.02;
         o.pose = swing_pose(w, 0, pivot, false);
-        fg_engine_config cfg = {.sample_rate_hz = FS, .speed_of_sound_m_s = C,
-                                .max_block_frames = 512, .channels = 1};
+        fg_engine_config cfg = {
+            .sample_rate_hz = FS, .speed_of_sound_m_s = C, .max_block_frames = 512, .channels = 1};
         fg_engine *e;
         assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
         fg_voice_id id;
@@ -1103,7 +1103,8 @@ static void any_block_same_samples(void **state)
         peak = fmax(peak, fabs(x[0][i]));
     }
     print_message("a swing in blocks of 256 and of 1 to 500 frames: %zu of %zu samples differ "
-                  "(peak %.3g Pa)\n", differ, n, peak);
+                  "(peak %.3g Pa)\n",
+                  differ, n, peak);
     if (differ || !(peak > 0))
         fail_msg("%zu samples differ between the two block patterns", differ);
     free(x[0]);
