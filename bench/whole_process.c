@@ -28,7 +28,7 @@
 #include "synth_tree.h"
 
 #define RATE_HZ 44100
-#define BLOCK_FRAMES 256
+#define BLOCK_FRAMES 512         /* fulgur render's own block (SCENE_RENDER_BLOCK_FRAMES) */
 #define SPEED_OF_SOUND_M_S 343.0 /* the peer's */
 
 typedef struct bolt {
@@ -126,7 +126,7 @@ static void check(fg_result r, const char *what)
 }
 
 /* fulgur's synthesis of the bolt: post + render of its frames, as the
- * scene's render does them (block 256, stereo, 44.1 kHz), CPU seconds. */
+ * scene's render does them (block 512, stereo, 44.1 kHz), CPU seconds. */
 static double fulgur_synthesis_s(const bolt *b)
 {
     fg_engine_config cfg = {.sample_rate_hz = RATE_HZ, .channels = 2,

@@ -30,7 +30,8 @@
 
 static const char about[] =
     "Renders each scene (docs/scene-format.md) through fg_engine_render in blocks of the\n"
-    "scene's \"block\" frames and writes 32-bit float WAV in pascals times \"gain\".\n"
+    "scene's \"block\" frames (512 when it gives none) and writes 32-bit float WAV in\n"
+    "pascals times \"gain\".\n"
     "Several scenes: -o names a directory (SCENE's NAME.wav in it) or a pattern with\n"
     "{name} and {index} (out/{name}-{index}.wav). Every scene is read and checked\n"
     "before the first is rendered. On a terminal, work longer than 2 s shows a\n"
@@ -100,7 +101,8 @@ typedef struct wav_sink {
 static uint32_t sink_capacity(const scene *s)
 {
     uint32_t frames = WAV_WRITE_BYTES / (uint32_t)(s->channels * sizeof(float));
-    return frames > s->block_frames ? frames : s->block_frames;
+    uint32_t block = scene_render_block_frames(s);
+    return frames > block ? frames : block;
 }
 
 /* Writes the gathered frames; FG_ERR_IO with a message when it fails. */
@@ -206,7 +208,9 @@ typedef struct render_result {
  * these samples exactly, scaled. */
 static int measure_peak(const scene *s, double *peak, char *err, size_t err_size)
 {
-    wav_sink w = {.s = s, .scale = (float)s->gain, .capacity = s->block_frames,
+    wav_sink w = {.s = s,
+                  .scale = (float)s->gain,
+                  .capacity = scene_render_block_frames(s),
                   .first_audible = UINT64_MAX};
     w.interleaved = malloc((size_t)w.capacity * s->channels * sizeof(float));
     if (!w.interleaved) {

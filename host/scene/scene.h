@@ -112,6 +112,10 @@ typedef struct scene_camera {
 /* Output channels at most: third-order ambisonics. */
 #define SCENE_MAX_CHANNELS 16
 
+/* "block" when a scene gives none: a live host's device buffer (fulgur
+ * run, view). A render takes SCENE_RENDER_BLOCK_FRAMES (scene_render.h). */
+#define SCENE_BLOCK_FRAMES 256
+
 typedef struct scene {
     double sample_rate_hz;
     uint32_t channels;         /* the layout's: 1 or 2 for stereo, (order + 1)^2 ambisonic */
@@ -119,7 +123,8 @@ typedef struct scene {
     uint32_t ambisonic_order;  /* FG_LAYOUT_AMBISONICS: 1..3; 0 otherwise */
     char *sofa_file;           /* "layout".sofa resolved (owned); NULL: the default */
     const fg_hrir_set *hrirs;  /* FG_LAYOUT_BINAURAL: borrowed from the host that read them */
-    uint32_t block_frames;
+    uint32_t block_frames;     /* "block": a device's buffer, SCENE_BLOCK_FRAMES when not given */
+    bool block_given;          /* the scene (or a --set) gave "block" */
     double duration_s;         /* 0: until every discharge has finished sounding */
     uint64_t seed;
     double gain;

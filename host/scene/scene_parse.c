@@ -33,7 +33,7 @@ static int syntax_error(const char *text, const char *at, const char *what, char
 
 static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_size)
 {
-    double rate = 48000, channels = 2, block = 256, seed = 1, speed = 343, temp = 20;
+    double rate = 48000, channels = 2, block = SCENE_BLOCK_FRAMES, seed = 1, speed = 343, temp = 20;
     s->gain = 1;
     s->humidity_pct = 70;
     s->pressure_kpa = 101.325;
@@ -74,6 +74,7 @@ static int parse_settings(const cJSON *json, scene *s, char *err, size_t err_siz
     s->sample_rate_hz = rate;
     s->channels = (uint32_t)channels;
     s->block_frames = (uint32_t)block;
+    s->block_given = cJSON_GetObjectItemCaseSensitive(json, "block") != NULL;
     s->seed = (uint64_t)seed;
     s->speed_of_sound_m_s = speed;
     return 0;

@@ -25,6 +25,7 @@ typedef struct render_job {
     size_t aeros_posted;
     float *planes[SCENE_MAX_CHANNELS];
     size_t segments;
+    uint32_t block_frames;  /* scene_render_block_frames */
     double pose_period_s;   /* between published poses */
     uint64_t next_pose;     /* the next pose to publish, in periods from 0 */
     scene_fire_job fires;
@@ -39,10 +40,12 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
         job->segments += d->node_count - 1;
         events += (d->node_count - 1) * (d->propagation.ground_reflection > 0 ? 2 : 1);
     }
-    double block_s = s->block_frames / s->sample_rate_hz;
+    job->block_frames = scene_render_block_frames(s);
+    double block_s = job->block_frames / s->sample_rate_hz;
     job->pose_period_s = fmax(1.0 / POSE_HZ, (block_s + POSE_LEAD_S) / POSES_PER_BLOCK_MAX);
     fg_engine_config cfg;
     scene_engine_config(s, &cfg);
+    cfg.max_block_frames = job->block_frames;
     cfg.max_voices = (uint32_t)(s->discharge_count + s->aero_count + s->fire_count);
     cfg.segment_capacity = events > UINT32_MAX ? UINT32_MAX : (uint32_t)events;
     /* an offline render has no deadline: the bound only keeps each block
@@ -62,7 +65,7 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
     job->aero_warned = calloc(s->aero_count + 1, sizeof *job->aero_warned);
     bool planes = true;
     for (uint32_t ch = 0; ch < s->channels; ch++)
-        planes = (job->planes[ch] = malloc((size_t)s->block_frames * sizeof(float))) && planes;
+        planes = (job->planes[ch] = malloc((size_t)job->block_frames * sizeof(float))) && planes;
     if (!job->order || !job->aero_ids || !job->aero_done || !job->aero_warned || !planes) {
         snprintf(err, err_size, "out of memory");
         return FG_ERR_NO_MEMORY;
@@ -171,7 +174,8 @@ static fg_result run(render_job *job, const scene_render_sink *sink, scene_rende
     while (report->frames < limit) {
         uint64_t frame = report->frames;
         double t = (double)frame / rate;
-        uint32_t n = limit - frame < s->block_frames ? (uint32_t)(limit - frame) : s->block_frames;
+        uint32_t n =
+            limit - frame < job->block_frames ? (uint32_t)(limit - frame) : job->block_frames;
         fg_result r;
         if ((r = publish_poses(job, t + n / rate + POSE_LEAD_S, err, err_size)) != FG_OK ||
             (r = post_due(job, t + n / rate + SCENE_POST_LEAD_S, err, err_size)) != FG_OK ||
@@ -199,6 +203,11 @@ static fg_result run(render_job *job, const scene_render_sink *sink, scene_rende
     }
     report->capped = s->duration_s == 0;
     return FG_OK;
+}
+
+uint32_t scene_render_block_frames(const scene *s)
+{
+    return s->block_given ? s->block_frames : SCENE_RENDER_BLOCK_FRAMES;
 }
 
 uint64_t scene_frame_limit(const scene *s)
