@@ -120,7 +120,7 @@ void fgs_scene_get_info(const fgs_scene *handle, fgs_scene_info *out)
     *out = (fgs_scene_info){
         .sample_rate_hz = s->sample_rate_hz,
         .channels = s->channels,
-        .block_frames = s->block_frames,
+        .block_frames = scene_render_block_frames(s),
         .duration_s = s->duration_s,
         .seed = s->seed,
         .gain = s->gain,

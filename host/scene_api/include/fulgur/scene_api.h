@@ -38,7 +38,8 @@ typedef struct fgs_scene fgs_scene;
 typedef struct fgs_scene_info {
     double sample_rate_hz;
     uint32_t channels;         /* 1 or 2 */
-    uint32_t block_frames;     /* frames per fg_engine_render call */
+    uint32_t block_frames;     /* frames per fg_engine_render call of the render: the
+                                * scene's "block", else 512 */
     double duration_s;         /* 0: until every discharge has finished sounding */
     uint64_t seed;
     double gain;               /* samples are pascals times gain */
