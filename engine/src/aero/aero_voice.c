@@ -180,7 +180,7 @@ static bool end_finite(const fg_aero_end *e)
 }
 
 /* The sources' next[], at the control frame after end[]'s; false when one
- * is not finite. */
+ * of either is not finite (end[] the first time: the start's). */
 static bool evaluate_next(fg_aero_voice *v, const fg_block_context *block)
 {
     const double fs = block->cfg->sample_rate_hz, c = block->cfg->speed_of_sound_m_s;
@@ -193,7 +193,7 @@ static bool evaluate_next(fg_aero_voice *v, const fg_block_context *block)
         for (unsigned ch = 0; ch < ears.count; ch++) {
             evaluate(v, s, &ears, ch, t1, s->end[ch].tau_s + (t1 - t0), &s->end[ch], s->rate[ch], c,
                      &s->next[ch], &s->next_rate[ch]);
-            if (!end_finite(&s->next[ch]))
+            if (!end_finite(&s->end[ch]) || !end_finite(&s->next[ch]))
                 return false;
         }
     }

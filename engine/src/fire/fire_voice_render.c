@@ -154,8 +154,8 @@ static bool end_finite(const fg_fire_end *e)
     return true;
 }
 
-/* Each ear at the control frame after end[]'s; false when one is not
- * finite. */
+/* Each ear at the control frame after end[]'s; false when one of either
+ * is not finite (end[] the first time: the adoption's). */
 static bool evaluate_next(fg_fire_voice_state *v, const fg_block_context *block)
 {
     const double fs = block->cfg->sample_rate_hz;
@@ -166,7 +166,7 @@ static bool evaluate_next(fg_fire_voice_state *v, const fg_block_context *block)
     for (unsigned k = 0; k < v->ears; k++) {
         evaluate(v, block->cfg, &ears, k, t1, v->end[k].tau_s + (t1 - t0), RETARDED_STEPS,
                  &v->next[k]);
-        if (!end_finite(&v->next[k]))
+        if (!end_finite(&v->end[k]) || !end_finite(&v->next[k]))
             return false;
     }
     v->next_ready = true;
