@@ -51,7 +51,7 @@ static void test_tail_ends(void **state)
                 out[c] = got[c] + k * BLOCK;
                 memset(out[c], 0, BLOCK * sizeof(float));
             }
-            fg_bus_set_begin(s, BLOCK);
+            fg_bus_set_begin(s, BLOCK, FG_CHUNK_CARRY);
             if (k == 0)
                 fg_bus_pre(s, bus, fed)[7] = IMPULSE_PA;
             assert_int_equal(fg_bus_set_end(s, out, BLOCK), 0);

@@ -517,7 +517,8 @@ static double run_blocks(const block_case *bc, uint64_t seed)
         if (n > total - start)
             n = total - start;
         fg_accum blk;
-        fg_accum_begin(&blk, d3, n);
+        memset(d3, 0, n * sizeof *d3);
+        fg_accum_restart(&blk, d3, n);
         for (int i = 0; i < bc->events; i++) {
             fg_wm_event rel = ev[i];
             rel.center -= (double)start;
@@ -546,9 +547,9 @@ static double run_blocks(const block_case *bc, uint64_t seed)
         fg_accum *alone[1] = {&blk}, *many[COPIES];
         for (size_t c = 0; c < COPIES; c++)
             many[c] = &copy[c];
-        fg_accum_end_all(alone, (float *[]){out}, 1, false);
-        fg_accum_end_all(many, copy_out, 2, false);
-        fg_accum_end_all(many + 2, copy_out + 2, COPIES - 2, fg_accum_avx2_available());
+        fg_accum_end_all(alone, (float *[]){out}, 1, n, false);
+        fg_accum_end_all(many, copy_out, 2, n, false);
+        fg_accum_end_all(many + 2, copy_out + 2, COPIES - 2, n, fg_accum_avx2_available());
         for (size_t c = 0; c < COPIES; c++)
             CHECK(memcmp(out, copy_out[c], n * sizeof *out) == 0,
                   "%s: copy %zu of a block, ended with others, differs from the block ended "
@@ -609,7 +610,8 @@ static void test_block_no_drift(void **state)
     double first_err = 0, last_err = 0;
     for (size_t b = 0; b < BLOCKS; b++) {
         fg_accum blk;
-        fg_accum_begin(&blk, d3, BLOCK);
+        memset(d3, 0, BLOCK * sizeof *d3);
+        fg_accum_restart(&blk, d3, BLOCK);
         for (int i = 0; i < EVENTS; i++) {
             fg_wm_event rel = ev[i];
             rel.center -= (double)(b * BLOCK);
@@ -688,10 +690,11 @@ static void test_overflowing_taps_refused_mid_wave(void **state)
     fg_wm_event e = {.shape = shape_of(1.0, 0.5, 10.0), .center = 1.5, .width = 100.0};
     e.shape.b = 1e307; /* 2 B psi / s overflows */
     fg_accum blk;
-    fg_accum_begin(&blk, d3, N);
+    memset(d3, 0, N * sizeof *d3);
+    fg_accum_restart(&blk, d3, N);
     CHECK(fg_wm_event_in_range(&e), "the wave is in range");
     CHECK(fg_wm_accum_add(&blk, &e) == FG_WAVE_NON_FINITE, "overflowing taps were accepted");
-    CHECK(!blk.touched, "a refused wave touched the block");
+    CHECK(!fg_accum_sounds(&blk), "a refused wave touched the block");
 
     e.shape.b = 1.0;
     double ref[N] = {0};

@@ -1,8 +1,8 @@
-/* The difference-domain accumulators' integration four blocks at once, one
- * per lane of an AVX vector of doubles (core/accum_internal.h). Each lane
- * runs end_one's three sums in its order, so every block gives the same
+/* The difference-domain accumulators' integration four at once, one per
+ * lane of an AVX vector of doubles (core/accum_internal.h). Each lane runs
+ * end_one's three sums in its order, so every accumulator gives the same
  * floats as alone; four chains in one vector also run four times as many
- * sums per add's latency as one block. */
+ * sums per add's latency as one. */
 #include "accum_internal.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -13,14 +13,15 @@
  * the portable end is */
 #define AVX2 __attribute__((target("avx2")))
 
-AVX2 size_t fg_accum_end_four_avx2(fg_accum *const b[4], float *const out[4], double sum[3][4])
+AVX2 uint32_t fg_accum_end_four_avx2(fg_accum *const b[4], float *const out[4], double sum[3][4],
+                                     uint32_t frames)
 {
-    const size_t end = b[0]->n & ~(size_t)3;
+    const uint32_t end = frames & ~(uint32_t)3;
     const __m256d zero = _mm256_setzero_pd();
     __m256d d2 = _mm256_loadu_pd(sum[0]), d1 = _mm256_loadu_pd(sum[1]), y = _mm256_loadu_pd(sum[2]);
-    for (size_t k = 0; k < end; k += 4) {
-        /* r[c]: block c's samples k .. k + 3, transposed to v[j]: sample
-         * k + j of the four blocks */
+    for (uint32_t k = 0; k < end; k += 4) {
+        /* r[c]: b[c]'s samples k .. k + 3, transposed to v[j]: sample
+         * k + j of the four */
         __m256d r[4];
         for (int c = 0; c < 4; c++) {
             r[c] = _mm256_loadu_pd(b[c]->d3 + k);
@@ -55,11 +56,13 @@ bool fg_accum_avx2_available(void)
 
 #else
 
-size_t fg_accum_end_four_avx2(fg_accum *const b[4], float *const out[4], double sum[3][4])
+uint32_t fg_accum_end_four_avx2(fg_accum *const b[4], float *const out[4], double sum[3][4],
+                                uint32_t frames)
 {
     (void)b;
     (void)out;
     (void)sum;
+    (void)frames;
     return 0; /* never chosen: fg_accum_avx2_available says no */
 }
 

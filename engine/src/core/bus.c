@@ -40,23 +40,30 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     while (frames < max_frames && 2 * (size_t)frames <= fit)
         frames *= 2;
     max_frames = frames < max_frames ? frames : max_frames;
+    /* the chunk: as long as the block, or doubled while the accumulators'
+     * planes and the block's floats fit */
+    uint32_t chunk = max_frames;
+    while (2 * (size_t)chunk <= FG_BUS_CHUNK_FRAMES &&
+           planes * (2 * chunk * sizeof *s->d3 + max_frames * sizeof *s->pre) <= FG_BUS_PLANE_BYTES)
+        chunk *= 2;
     /* the planes and the FIRs in one allocation (fg_big_alloc.h): stereo's
      * 0.6 MB at 256 frames took 190 page faults as three */
-    const size_t samples = planes * max_frames;
+    const size_t samples = planes * max_frames, chunk_samples = planes * chunk;
     const size_t firs = (size_t)(s->count / FG_BUS_PLAIN) * channels;
-    const size_t bytes = samples * sizeof *s->d3 + firs * sizeof *s->fir +
-                         samples * sizeof *s->pre;
+    const size_t bytes =
+        chunk_samples * sizeof *s->d3 + firs * sizeof *s->fir + samples * sizeof *s->pre;
     _Static_assert(sizeof(double) % _Alignof(fg_abe_fir) == 0 &&
                        sizeof(fg_abe_fir) % _Alignof(float) == 0,
                    "the FIRs follow the doubles, the floats the FIRs, each aligned");
     s->d3 = fg_big_calloc(bytes, 1);
     if (!s->d3)
         return FG_ERR_NO_MEMORY;
-    s->fir = (fg_abe_fir *)(void *)(s->d3 + samples);
+    s->fir = (fg_abe_fir *)(void *)(s->d3 + chunk_samples);
     s->pre = (float *)(void *)(s->fir + firs);
     fg_prefault_zeroed(s->d3, bytes);
     s->channels = channels;
     s->max_frames = max_frames;
+    s->chunk_frames = chunk;
     s->accum_avx2 = fg_accum_avx2_available();
     s->fs_hz = fs_hz;
     s->air = *air;
@@ -74,14 +81,9 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
             fg_iir_reset(&s->chan[ch].shadow[b]);
         }
     }
-    for (unsigned b = 0; b < s->count; b++) {
-        for (unsigned ch = 0; ch < channels; ch++) {
-            size_t plane = (size_t)b * channels + ch;
-            fg_accum_begin(&s->chan[ch].accum[b], s->d3 + plane * max_frames, max_frames);
-            s->chan[ch].pre[b] = s->pre + plane * max_frames;
+    for (unsigned b = 0; b < s->count; b++)
+        for (unsigned ch = 0; ch < channels; ch++)
             s->chan[ch].quiet[b] = FG_ABE_FIR_HISTORY;
-        }
-    }
     return FG_OK;
 }
 
@@ -125,16 +127,34 @@ static unsigned next_busy(const fg_bus_set *s, unsigned b)
     return FG_BUS_COUNT;
 }
 
-void fg_bus_set_begin(fg_bus_set *s, uint32_t n)
+/* The plane of bus b, channel ch, in pre. */
+static float *pre_plane(const fg_bus_set *s, unsigned b, unsigned ch)
 {
+    return s->pre + ((size_t)b * s->channels + ch) * s->max_frames;
+}
+
+void fg_bus_set_begin(fg_bus_set *s, uint32_t n, fg_chunk_start start)
+{
+    const bool fresh = start != FG_CHUNK_CARRY || s->chunk_pos + n > s->chunk_len;
     for (unsigned b = next_busy(s, 0); b < FG_BUS_COUNT; b = next_busy(s, b + 1)) {
-        for (fg_channel_mask m = s->opened[b]; m; m &= m - 1)
-            fg_accum_restart(&s->chan[__builtin_ctzll(m)].accum[b], n);
+        if (fresh) {
+            /* what the chunk's waves wrote beyond its blocks */
+            for (fg_channel_mask m = s->opened[b]; m; m &= m - 1) {
+                fg_accum *a = &s->chan[__builtin_ctzll(m)].accum[b];
+                memset(a->d3, 0, a->n * sizeof *a->d3);
+                fg_accum_restart(a, a->d3, 0);
+            }
+            s->opened[b] = 0;
+        }
         for (fg_channel_mask m = s->pre_used[b]; m; m &= m - 1)
-            memset(s->chan[__builtin_ctzll(m)].pre[b], 0, s->max_frames * sizeof(float));
-        s->opened[b] = s->pre_used[b] = 0;
-        if (!s->ringing[b])
+            memset(pre_plane(s, b, (unsigned)__builtin_ctzll(m)), 0, s->max_frames * sizeof(float));
+        s->pre_used[b] = 0;
+        if (!s->ringing[b] && !s->opened[b])
             s->busy[b / 64] &= ~((uint64_t)1 << (b % 64));
+    }
+    if (fresh) {
+        s->chunk_len = start == FG_CHUNK_BLOCK ? n : s->chunk_frames;
+        s->chunk_pos = 0;
     }
     s->frames = n;
 }
@@ -143,7 +163,7 @@ float *fg_bus_pre(fg_bus_set *s, unsigned b, unsigned ch)
 {
     s->pre_used[b] |= (fg_channel_mask)1 << ch;
     fg_bus_busy(s, b);
-    return s->chan[ch].pre[b];
+    return pre_plane(s, b, ch);
 }
 
 /* The band filter of bus b (a band bus or its twin), ear ch. */
@@ -223,7 +243,7 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
         fg_channel_mask touched = 0;
         for (fg_channel_mask m = s->opened[b]; m; m &= m - 1) {
             unsigned c = (unsigned)__builtin_ctzll(m);
-            touched |= (fg_channel_mask)s->chan[c].accum[b].touched << c;
+            touched |= (fg_channel_mask)fg_accum_sounds(&s->chan[c].accum[b]) << c;
         }
         fg_channel_mask live = touched | s->pre_used[b] | s->ringing[b];
         fg_accum *acc[FG_BUS_MAX_CHANNELS];
@@ -238,7 +258,7 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
                 x[dry++] = out[c];
                 written |= (fg_channel_mask)1 << c;
             }
-            fg_accum_end_all(acc, x, dry, s->accum_avx2);
+            fg_accum_end_all(acc, x, dry, n, s->accum_avx2);
             for (unsigned k = 0; k < dry; k++) {
                 if (!all_finite(x[k], n)) {
                     memset(x[k], 0, n * sizeof(float));
@@ -252,11 +272,11 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             unsigned c = (unsigned)__builtin_ctzll(m);
             ch[planes] = c;
             acc[planes] = &s->chan[c].accum[b];
-            x[planes] = s->chan[c].pre[b];
+            x[planes] = pre_plane(s, b, c);
             input[planes++] = (touched | s->pre_used[b]) >> c & 1;
             s->pre_used[b] |= (fg_channel_mask)1 << c; /* zero it again next block */
         }
-        fg_accum_end_all(acc, x, planes, s->accum_avx2);
+        fg_accum_end_all(acc, x, planes, n, s->accum_avx2);
         for (unsigned k = 0; k < planes; k++) {
             if (input[k] && !all_finite(x[k], n)) {
                 memset(x[k], 0, n * sizeof(float));
@@ -288,7 +308,16 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             for (uint32_t i = 0; i < n; i++)
                 out[ch[k]][i] += x[k][i];
         }
+        /* one whose waves have ended, or that was handed out for none,
+         * holds nothing: the chunk's next block starts it afresh */
+        fg_channel_mask sounding = 0;
+        for (fg_channel_mask m = touched; m; m &= m - 1) {
+            unsigned c = (unsigned)__builtin_ctzll(m);
+            sounding |= (fg_channel_mask)fg_accum_sounds(&s->chan[c].accum[b]) << c;
+        }
+        s->opened[b] = sounding;
     }
     s->written = written;
+    s->chunk_pos += n;
     return dropped;
 }

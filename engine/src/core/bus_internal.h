@@ -46,12 +46,30 @@ enum {
  * tests/test_buses.c. */
 #define FG_BUS_TAIL_FLOOR_PA 1e-12
 
-/* The most bytes the planes (a double and a float per frame, bus and
- * channel) take: a longer max_frames is cut to the longest power of two
- * that fits (stereo with the twins keeps 4096 frames, third-order
- * ambisonics 1024, binaural 512), and the engine renders a longer call as
- * blocks of that length (core/render.c). */
+/* The most bytes the planes (a double a frame of the chunk and a float a
+ * frame of the block, per bus and channel) take: a longer max_frames is cut
+ * to the longest power of two that fits (stereo with the twins keeps 4096
+ * frames, third-order ambisonics 1024, binaural 512), and the engine
+ * renders a longer call as blocks of that length (core/render.c). */
 #define FG_BUS_PLANE_BYTES (16u << 20)
+
+/* The longest chunk: the accumulators' planes are as long where
+ * FG_BUS_PLANE_BYTES holds them, else as long as the block. A still
+ * listener's block adds to the chunk's accumulators each wave that joins
+ * it, to the chunk's end, and no wave already written: a wave is visited
+ * once a chunk, not once a block. 1 024 frames (21 ms at 48 kHz): stereo's
+ * 188 planes of them, with 512-frame blocks' floats and the FIRs, take
+ * 2.07 MB, the one huge page the 512-frame planes took
+ * (fg_big_alloc.h), so no process grows; 2 048 would cost 2 MiB more
+ * (bench/results/whole_process.md, "Chunks"). */
+#define FG_BUS_CHUNK_FRAMES 1024
+
+/* How a block's accumulators begin (fg_bus_set_begin). */
+typedef enum fg_chunk_start {
+    FG_CHUNK_CARRY, /* in the chunk under way, or a new one where the block does not fit it */
+    FG_CHUNK_NEW,   /* in a new chunk: what was written ahead is dropped */
+    FG_CHUNK_BLOCK  /* in a new chunk of this block alone (a moving listener's) */
+} fg_chunk_start;
 
 /* A bit per channel (FG_BUS_MAX_CHANNELS <= 64): a block's work on a bus
  * visits only the channels whose bits are set, so a bus costs per channel
@@ -61,7 +79,6 @@ typedef uint64_t fg_channel_mask;
 /* One channel of every bus: its input and its filters' state. */
 typedef struct fg_bus_channel {
     fg_accum accum[FG_BUS_COUNT];  /* difference-domain input (the WM-waves), per bus */
-    float *pre[FG_BUS_COUNT];      /* the bus's signal before the filters */
     uint32_t quiet[FG_BUS_COUNT];  /* frames since the FIR last had input */
     fg_iir band[2][FG_ABSORPTION_BANDS]; /* [plain, twin][band] */
     fg_iir shadow[FG_BUS_PLAIN];   /* the twins' head high-pass */
@@ -73,10 +90,16 @@ typedef struct fg_bus_set {
     unsigned channels;
     uint32_t max_frames; /* the longest block: the max_frames asked, or fewer to fit
                           * FG_BUS_PLANE_BYTES */
-    uint32_t frames;     /* audio thread: the block under way */
-    double *d3;          /* count * channels * max_frames; the allocation (fg_big_alloc.h)
-                          * that fir and pre lie in, after it */
-    float *pre;          /* the same count of floats */
+    uint32_t chunk_frames; /* the longest chunk: max_frames, or up to
+                            * FG_BUS_CHUNK_FRAMES where they fit */
+    /* audio thread: the block under way, and the chunk it lies in: its
+     * length and the frames of it before the block */
+    uint32_t frames, chunk_len, chunk_pos;
+    double *d3; /* count * channels * chunk_frames, bus by bus, a chunk long
+                 * each (fg_bus_accum); the allocation (fg_big_alloc.h) that
+                 * fir and pre lie in, after it */
+    float *pre; /* count * channels * max_frames floats, bus by bus: the
+                 * buses' signal before the filters (fg_bus_pre) */
     /* filters: shared coefficients, state per ear */
     fg_band_plan plan;
     bool bands_designed; /* sim thread only: the audio thread touches a band's
@@ -87,8 +110,8 @@ typedef struct fg_bus_set {
     double fs_hz;
     bool accum_avx2;     /* the CPU ends the accumulators four at a time in AVX2 */
     /* audio thread, a bit per channel of each bus: */
-    fg_channel_mask opened[FG_BUS_COUNT];   /* accumulators handed out this block (and set
-                                             * to its length): the others are zero, unused */
+    fg_channel_mask opened[FG_BUS_COUNT];   /* accumulators handed out in this chunk, at
+                                             * the block: the others are zero, unused */
     fg_channel_mask pre_used[FG_BUS_COUNT]; /* something was written into pre this block */
     fg_channel_mask ringing[FG_BUS_COUNT];  /* the filters still hold a tail: an IIR's
                                              * state, or the FIR's history of input */
@@ -103,7 +126,8 @@ typedef struct fg_bus_set {
 } fg_bus_set;
 
 /* Allocates the buses for blocks of max_frames frames or of fewer, to fit
- * FG_BUS_PLANE_BYTES (s->max_frames says), with the twins and their filter
+ * FG_BUS_PLANE_BYTES (s->max_frames says), and chunks of chunk_frames,
+ * with the twins and their filter
  * for a head of radius head_radius_m (0: none, no twins). s is zeroed
  * memory (the engine's allocation); the part the channels use is mapped,
  * the channels beyond them are never written. [main-thread] */
@@ -122,8 +146,9 @@ void fg_bus_set_design_bands(fg_bus_set *s);
  * source takes the returned bus alone). [audio-thread] safe. */
 unsigned fg_bus_for_distance(const fg_bus_set *s, double r_m, double *w_next);
 
-/* Starts a block of n frames on every bus. [audio-thread] */
-void fg_bus_set_begin(fg_bus_set *s, uint32_t n);
+/* Starts a block of n frames on every bus, in the chunk start says.
+ * [audio-thread] */
+void fg_bus_set_begin(fg_bus_set *s, uint32_t n, fg_chunk_start start);
 
 /* The float buffer of bus b, channel ch, for waves rendered sample by
  * sample. */
@@ -136,8 +161,8 @@ static inline void fg_bus_busy(fg_bus_set *s, unsigned b)
 }
 
 /* The difference-domain accumulator of bus b, channel ch, for waves added
- * per breakpoint; the first call of a block starts it on the block's
- * length. [audio-thread] */
+ * per breakpoint, from the block's start to the chunk's end; the first
+ * call of a chunk starts it there. [audio-thread] */
 static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
 {
     fg_accum *a = &s->chan[ch].accum[b];
@@ -145,19 +170,22 @@ static inline fg_accum *fg_bus_accum(fg_bus_set *s, unsigned b, unsigned ch)
     if (!(s->opened[b] & bit)) {
         s->opened[b] |= bit;
         fg_bus_busy(s, b);
-        fg_accum_restart(a, s->frames);
+        double *plane = s->d3 + ((size_t)b * s->channels + ch) * s->chunk_frames;
+        fg_accum_restart(a, plane + s->chunk_pos, s->chunk_len - s->chunk_pos);
     }
     return a;
 }
 
-/* Filters every bus with input or a ringing tail and adds it to out,
+/* Ends the block of n: integrates its frames of the accumulators, filters
+ * every bus with input or a ringing tail and adds it to out,
  * noting in s->written the output planes it wrote (the others it leaves
  * as they were). The
  * last guard of a finite output: a bus whose block holds a non-finite
  * sample before its filters is dropped for the block (its filters keep
- * their state), and an output plane that would hold one is zeroed. Returns
- * how many blocks of a bus and ear were dropped (0 whenever the models kept
- * their waves finite). [audio-thread] */
+ * their state; its accumulator's sums may stay non-finite: the caller
+ * starts the next block in a new chunk), and an output plane that would
+ * hold one is zeroed. Returns how many blocks of a bus and ear were
+ * dropped (0 whenever the models kept their waves finite). [audio-thread] */
 uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n);
 
 #endif

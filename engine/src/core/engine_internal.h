@@ -54,6 +54,8 @@ struct fg_engine {
     uint32_t active_count;
     fg_trajectory trajectory; /* the poses read so far */
     uint64_t poses_seen;      /* the number of the newest */
+    uint64_t chunk_serial;    /* the trajectory's serial the chunk's waves were heard at */
+    bool restart_chunk;       /* the next block starts a new chunk (fg_block_context.restart) */
 
     atomic_uint_least64_t frames;
     fg_counters counters;

@@ -32,7 +32,16 @@ static void render_block(fg_engine *e, float *const *out, uint32_t nframes)
     fg_trajectory_head(&e->trajectory, start_s, &head);
     fg_ears ears;
     fg_head_ears(&head, fg_layout_ears(&e->cfg), e->cfg.ear_spacing_m, &ears);
-    fg_bus_set_begin(&e->buses, nframes);
+    /* a new chunk when the listener moves (its waves are heard where they
+     * arrive, a block at a time), when the pose has changed since the
+     * chunk's waves were written, or when a source asked */
+    const uint64_t serial = fg_trajectory_serial(&e->trajectory);
+    fg_chunk_start chunk = !e->trajectory.still                            ? FG_CHUNK_BLOCK
+                           : serial != e->chunk_serial || e->restart_chunk ? FG_CHUNK_NEW
+                                                                           : FG_CHUNK_CARRY;
+    fg_bus_set_begin(&e->buses, nframes, chunk);
+    e->chunk_serial = serial;
+    e->restart_chunk = false;
     const uint64_t work_bound = (uint64_t)e->cfg.work_per_frame * nframes + FG_WORK_BLOCK_FLOOR;
     uint64_t work_left = work_bound;
     fg_block_context block = {
@@ -42,8 +51,11 @@ static void render_block(fg_engine *e, float *const *out, uint32_t nframes)
         .trajectory = &e->trajectory,
         .ears = &ears,
         .position = head.position,
-        .serial = fg_trajectory_serial(&e->trajectory),
+        .serial = serial,
         .buses = &e->buses,
+        .ahead = e->buses.chunk_len - e->buses.chunk_pos,
+        .chunk_start = e->buses.chunk_pos == 0,
+        .restart = &e->restart_chunk,
         .counters = &e->counters,
         .work_left = &work_left,
     };

@@ -93,6 +93,16 @@ typedef struct fg_block_context {
     const double *position;
     uint64_t serial;            /* fg_trajectory_serial: changes when the trajectory does */
     fg_bus_set *buses;
+    /* The chunk (core/bus_internal.h): a source adding to the accumulators
+     * (fg_bus_accum) writes each wave to the chunk's end, ahead frames from
+     * the block's start. In its first block every sounding wave is added
+     * from the block's start; in a later one only the waves not yet
+     * written in it. A source that takes back a wave it wrote ahead (a
+     * stop, a retired voice) sets *restart: the next block starts a new
+     * chunk, without it. */
+    uint32_t ahead;
+    bool chunk_start;
+    bool *restart;
     fg_counters *counters;      /* late events and samples, skipped repeats and work */
     uint64_t *work_left;        /* the block's work bound: units not yet spent
                                  * (fg_engine_config.work_per_frame); a model

@@ -125,6 +125,7 @@ static const fg_discharge_model abe_model = {
     .start_s = abe_start_s,
     .finite = abe_finite,
     .path_units = abe_path_units, /* its series, sample by sample */
+    .writes_ahead = false,        /* its series into the block's planes */
 };
 
 const fg_source_ops fg_source_abe = {

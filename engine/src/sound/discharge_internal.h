@@ -114,6 +114,8 @@ typedef struct fg_event_play {
     double fs_hz;
     double c_m_s;
     uint32_t frames;
+    uint32_t ahead; /* how far the model adds: to the chunk's end (fg_block_context.ahead)
+                     * when it writes ahead, else frames */
 } fg_event_play;
 
 /* What makes a discharge model, besides its render: fg_discharge_render_with
@@ -139,13 +141,29 @@ typedef struct fg_discharge_model {
      * closed-form terms whatever its length. Units are
      * priced by their measured CPU time (docs/limits.md). [audio-thread] */
     uint64_t (*path_units)(const fg_event_ear *ear, const fg_event_play *play);
+    /* Its add writes a wave to the chunk's end (the accumulators), so that
+     * a wave is visited once a chunk; else it adds the block alone, and
+     * every sounding wave is visited every block. */
+    bool writes_ahead;
 } fg_discharge_model;
 
 typedef struct fg_instance {
     double offset_s;      /* emission time after the voice's emit time */
     uint32_t lo, hi;      /* events before lo are done; from hi on not yet begun */
+    /* a model writing ahead: the ears of the events before `ahead`, and
+     * ears before ahead_ear of that one, are written to the chunk's end;
+     * the last sample they touch, on the engine clock */
+    uint32_t ahead, ahead_ear;
+    double last_frame;
     bool main_only;       /* dart leader: the main channel only */
 } fg_instance;
+
+/* Whether a wave the instance wrote ahead may still sound from the block
+ * starting at start_frame on (fg_wm_event_ended). */
+static inline bool fg_instance_sounds_ahead(const fg_instance *in, double start_frame)
+{
+    return in->last_frame - start_frame >= -3.0;
+}
 
 /* A discharge voice's state (the kind's voice_bytes). */
 typedef struct fg_discharge_voice {

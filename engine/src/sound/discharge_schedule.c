@@ -26,7 +26,8 @@ void fg_discharge_adopt(void *voice, const fg_block_context *block)
     v->inst_count = 0;
     v->non_finite = false;
     for (uint32_t k = 0; k < v->strokes; k++)
-        v->inst[v->inst_count++] = (fg_instance){v->stroke_offset_s[k], 0, 0, k > 0};
+        v->inst[v->inst_count++] = (fg_instance){
+            .offset_s = v->stroke_offset_s[k], .last_frame = -INFINITY, .main_only = k > 0};
     v->next_repeat_s = v->continuous ? next_repeat_s(v, 0.0) : -1.0;
 }
 
@@ -69,7 +70,8 @@ static void spawn_repeats(fg_discharge_voice *v, const fg_discharge_block *vb)
     double first_start = v->events[0].start_s;
     while (v->next_repeat_s >= 0 && v->next_repeat_s + first_start - vb->margin_s <= vb->end_s) {
         if (v->inst_count < FG_MAX_INSTANCES && *vb->ctx->work_left > 0)
-            v->inst[v->inst_count++] = (fg_instance){v->next_repeat_s, 0, 0, false};
+            v->inst[v->inst_count++] =
+                (fg_instance){.offset_s = v->next_repeat_s, .last_frame = -INFINITY};
         else
             fg_count(&vb->ctx->counters->skipped_repeats, 1);
         v->next_repeat_s = next_repeat_s(v, v->next_repeat_s);
@@ -88,13 +90,19 @@ void fg_discharge_begin_block(fg_discharge_voice *v, bool stopping, const fg_blo
         .moving = !ctx->trajectory->still,
     };
     if (stopping) {
-        /* emissions that have not begun by this block's start never will */
+        /* emissions that have not begun by this block's start never will;
+         * the waves of one that did join (a listener within the look-ahead
+         * of the source) were written ahead */
         double start_s = vb->end_s - ctx->frames / fs;
         for (uint32_t i = 0; i < v->inst_count;) {
-            if (v->inst[i].offset_s > start_s)
+            if (v->inst[i].offset_s > start_s) {
+                if (v->model->writes_ahead &&
+                    fg_instance_sounds_ahead(&v->inst[i], ctx->start_frame))
+                    *ctx->restart = true;
                 v->inst[i] = v->inst[--v->inst_count];
-            else
+            } else {
                 i++;
+            }
         }
         v->next_repeat_s = -1.0;
     }

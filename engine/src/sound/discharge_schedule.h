@@ -9,7 +9,10 @@
  * window in order once their waveform has ended for every ear; one that
  * has ended behind a longer one still sounding stays in the window, where
  * each ear costs the model's placing of its span (fg_discharge_place_fn),
- * not an add, and the unit of the work bound it always cost.
+ * not an add, and the unit of the work bound it always cost. A model that
+ * writes ahead (the WM-wave's accumulators) adds a wave to the end of the
+ * chunk (core/bus_internal.h) and visits it again only in the next chunk's
+ * first block: a long wave costs about what a short one does.
  *
  * One implementation for both models, written once here and instantiated
  * by each model's render with its own add function (wm_model.c,
@@ -17,6 +20,8 @@
  * the per-event loop, the hottest of the audio thread. [audio-thread] */
 #ifndef FULGUR_DISCHARGE_SCHEDULE_H
 #define FULGUR_DISCHARGE_SCHEDULE_H
+
+#include <math.h>
 
 #include "discharge_internal.h"
 
@@ -129,7 +134,13 @@ static inline fg_wave_status fg_discharge_price_ended(const fg_block_context *ct
 /* Renders one instance; returns true once all its events are done. Stops
  * at the first ear whose price does not fit the block's work (it and the
  * unit of each ear after it are counted skipped) or a wave that is not
- * finite (v->non_finite). */
+ * finite (v->non_finite).
+ *
+ * A model that writes ahead visits, in a chunk's first block, every event
+ * of the window and, in a later one, only those not yet written in the
+ * chunk (those that joined the window, or that a skip left): a wave is
+ * then placed, evaluated and added once a chunk, whatever its length. The
+ * instance is done once every event is written and has ended. */
 static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instance *in,
                                                 const fg_discharge_block *vb,
                                                 fg_discharge_place_fn place,
@@ -141,6 +152,15 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
     while (in->hi < n &&
            fg_instance_event(v, in, in->hi)->start_s + in->offset_s - vb->margin_s <= vb->end_s)
         in->hi++;
+    const bool whole = !v->model->writes_ahead || ctx->chunk_start;
+    if (whole) {
+        in->ahead = in->lo;
+        in->ahead_ear = 0;
+        in->last_frame = -INFINITY;
+    } else if (in->ahead == n && !fg_instance_sounds_ahead(in, ctx->start_frame)) {
+        in->lo = n;
+        return true;
+    }
 
     fg_event_play play = {
         .cfg = ctx->cfg,
@@ -150,12 +170,13 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         .fs_hz = ctx->cfg->sample_rate_hz,
         .c_m_s = ctx->cfg->speed_of_sound_m_s,
         .frames = ctx->frames,
+        .ahead = v->model->writes_ahead ? ctx->ahead : ctx->frames,
     };
     /* the instance's emission on the engine clock, seconds */
     const double emission_s = (v->emit_frame / play.fs_hz) + in->offset_s;
     uint64_t late = 0, lost = 0;
     const unsigned ears = ctx->ears->count;
-    for (uint32_t k = in->lo; k < in->hi; k++) {
+    for (uint32_t k = in->ahead; k < in->hi; k++) {
         uint64_t skipped = 0;
         fg_event *ev = fg_instance_event(v, in, k);
         if (!vb->moving && ev->serial != ctx->serial) {
@@ -166,7 +187,7 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         }
         bool done = true;
         long lost_here = 0;
-        for (unsigned ch = 0; ch < ears; ch++) {
+        for (unsigned ch = k == in->ahead ? in->ahead_ear : 0; ch < ears; ch++) {
             const fg_event_ear *ear = &ev->ear[ch];
             fg_event_ear heard;
             if (vb->moving) {
@@ -187,12 +208,15 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
             }
             if (st == FG_WAVE_SKIPPED) {
                 skipped = units + (ears - ch - 1) + (uint64_t)(in->hi - k - 1) * ears;
+                in->ahead = k;
+                in->ahead_ear = ch;
                 done = false;
                 break;
             }
             if (st != FG_WAVE_DONE)
                 done = false;
             const long a = at.first, b = at.last;
+            in->last_frame = fmax(in->last_frame, ctx->start_frame + (double)b);
             long missed = k >= first_new && a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
             if (missed > lost_here)
                 lost_here = missed;
@@ -201,12 +225,14 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
             late++;
             lost += (uint64_t)lost_here;
         }
-        if (done && k == in->lo)
+        if (done && k == in->lo && whole)
             in->lo++;
         if (skipped) {
             fg_count(&ctx->counters->skipped_work, skipped);
             break;
         }
+        in->ahead = k + 1;
+        in->ahead_ear = 0;
     }
     if (late) {
         fg_count(&ctx->counters->late_events, late);
@@ -233,6 +259,10 @@ static inline bool fg_discharge_render_with(void *voice, bool stopping,
     }
     if (v->non_finite) {
         fg_count(&ctx->counters->non_finite_voices, 1);
+        /* the waves it wrote ahead end with the block */
+        for (uint32_t i = 0; i < v->inst_count && v->model->writes_ahead; i++)
+            if (fg_instance_sounds_ahead(&v->inst[i], ctx->start_frame))
+                *ctx->restart = true;
         return true;
     }
     return v->inst_count == 0 && v->next_repeat_s < 0;

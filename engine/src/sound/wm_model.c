@@ -55,10 +55,10 @@ static fg_wave_status wm_place(const fg_event *ev, const fg_event_ear *ear,
     return fg_wm_event_ended(at->last) ? FG_WAVE_DONE : FG_WAVE_SOUNDING;
 }
 
-/* A wave sounding through the block, which adds its state alone: the
- * state's edges, placed once, give each bus's three values. */
+/* A wave sounding through the rest of the chunk, which adds its state
+ * alone: the state's edges, placed once, give each bus's three values. */
 static fg_wave_status add_through(const fg_event_ear *ear, const fg_event_play *play,
-                                  const fg_wm_state_edges *edges)
+                                  const fg_wave_place *at, const fg_wm_state_edges *edges)
 {
     fg_wm_shape w = ear->wm;
     fg_wave_status status = FG_WAVE_DONE;
@@ -70,8 +70,11 @@ static fg_wave_status add_through(const fg_event_ear *ear, const fg_event_play *
         if (!fg_wm_state_values(edges, &w, y))
             return FG_WAVE_NON_FINITE;
         status = FG_WAVE_SOUNDING;
-        for (unsigned c = 0; c < play->channels; c++)
-            fg_wm_state_add(fg_bus_accum(play->buses, play->bus[k], play->ch[c]), y, play->gain[c]);
+        for (unsigned c = 0; c < play->channels; c++) {
+            fg_accum *a = fg_bus_accum(play->buses, play->bus[k], play->ch[c]);
+            fg_wm_state_add(a, y, play->gain[c]);
+            fg_accum_hold(a, at->last + 4);
+        }
     }
     return status;
 }
@@ -83,8 +86,8 @@ static fg_wave_status wm_add(const fg_event_ear *ear, const fg_event_play *play,
                              const fg_wave_place *at)
 {
     fg_wm_state_edges edges;
-    if (fg_wm_through(&at->wm, at->first, at->last, (long)play->frames, &edges))
-        return add_through(ear, play, &edges);
+    if (fg_wm_through(&at->wm, at->first, at->last, (long)play->ahead, &edges))
+        return add_through(ear, play, at, &edges);
     fg_wm_event we = at->wm;
     fg_wave_status status = FG_WAVE_DONE;
     for (int k = 0; k < FG_PLAY_BUSES; k++) {
@@ -92,7 +95,7 @@ static fg_wave_status wm_add(const fg_event_ear *ear, const fg_event_play *play,
             continue;
         we.shape.b = ear->wm.b * play->share[k];
         fg_wm_taps taps;
-        status = fg_wm_taps_eval(&we, at->first, at->last, (long)play->frames, &taps);
+        status = fg_wm_taps_eval(&we, at->first, at->last, (long)play->ahead, &taps);
         if (status == FG_WAVE_NON_FINITE)
             break;
         if (status != FG_WAVE_SOUNDING)
@@ -115,6 +118,7 @@ static const fg_discharge_model wm_model = {
     .start_s = wm_start_s,
     .finite = wm_finite,
     .path_units = NULL, /* a few closed-form terms, whatever its length */
+    .writes_ahead = true,
 };
 
 const fg_source_ops fg_source_wm = {

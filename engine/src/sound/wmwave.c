@@ -333,6 +333,7 @@ fg_wave_status fg_wm_taps_eval(const fg_wm_event *e, long first, long last, long
         return FG_WAVE_DONE;
     if (first >= n)
         return FG_WAVE_PENDING;
+    t->end = last + 4; /* the last breakpoint's taps reach last + 3 */
 
     if (w->s * e->width >= CLOSED_FORM_MIN_SW) {
         t->closed_form = true;
@@ -387,7 +388,6 @@ bool fg_wm_through(const fg_wm_event *e, long first, long last, long n, fg_wm_st
 /* add_range's of -3 .. -1: the state alone */
 void fg_wm_state_add(fg_accum *b, const double y[3], double gain)
 {
-    b->touched = true;
     b->state[2] += gain * y[0];
     b->state[1] += gain * y[1];
     b->state[0] += gain * y[2];
@@ -395,7 +395,7 @@ void fg_wm_state_add(fg_accum *b, const double y[3], double gain)
 
 void fg_wm_taps_add(fg_accum *b, const fg_wm_taps *t, double gain)
 {
-    b->touched = true;
+    fg_accum_hold(b, t->end);
     if (t->closed_form) {
         if (t->state)
             fg_wm_state_add(b, t->y[0], gain);

@@ -100,6 +100,7 @@ typedef struct fg_wm_taps {
     double y[FG_WM_RANGES_MAX][FG_WM_RANGE_MAX];
     long m[4];                    /* closed form: the sample holding each breakpoint */
     double taps[4][4];            /* its third differences at m .. m + 3 */
+    long end;                     /* the wave adds nothing from this sample on */
 } fg_wm_taps;
 
 /* Evaluates, for a block of n frames, event e in range but perhaps for
