@@ -153,6 +153,7 @@ void fg_bus_set_begin(fg_bus_set *s, uint32_t n, fg_chunk_start start)
             s->busy[b / 64] &= ~((uint64_t)1 << (b % 64));
     }
     if (fresh) {
+        s->chunk_follows = start != FG_CHUNK_NEW && s->chunk_pos == s->chunk_len;
         s->chunk_len = start == FG_CHUNK_BLOCK ? n : s->chunk_frames;
         s->chunk_pos = 0;
     }

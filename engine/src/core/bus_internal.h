@@ -93,8 +93,11 @@ typedef struct fg_bus_set {
     uint32_t chunk_frames; /* the longest chunk: max_frames, or up to
                             * FG_BUS_CHUNK_FRAMES where they fit */
     /* audio thread: the block under way, and the chunk it lies in: its
-     * length and the frames of it before the block */
+     * length and the frames of it before the block; whether it follows
+     * the chunk before whole (that one's every frame was ended, none of
+     * what it wrote dropped) */
     uint32_t frames, chunk_len, chunk_pos;
+    bool chunk_follows;
     double *d3; /* count * channels * chunk_frames, bus by bus, a chunk long
                  * each (fg_bus_accum); the allocation (fg_big_alloc.h) that
                  * fir and pre lie in, after it */

@@ -55,6 +55,7 @@ static void render_block(fg_engine *e, float *const *out, uint32_t nframes)
         .buses = &e->buses,
         .ahead = e->buses.chunk_len - e->buses.chunk_pos,
         .chunk_start = e->buses.chunk_pos == 0,
+        .chunk_follows = e->buses.chunk_follows,
         .restart = &e->restart_chunk,
         .counters = &e->counters,
         .work_left = &work_left,

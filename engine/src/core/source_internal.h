@@ -97,11 +97,13 @@ typedef struct fg_block_context {
      * (fg_bus_accum) writes each wave to the chunk's end, ahead frames from
      * the block's start. In its first block every sounding wave is added
      * from the block's start; in a later one only the waves not yet
-     * written in it. A source that takes back a wave it wrote ahead (a
-     * stop, a retired voice) sets *restart: the next block starts a new
-     * chunk, without it. */
+     * written in it. A chunk that follows the one before whole
+     * (chunk_follows) need not visit the waves that one wrote to their
+     * end. A source that takes back a wave it wrote ahead (a stop, a
+     * retired voice) sets *restart: the next block starts a new chunk,
+     * without it. */
     uint32_t ahead;
-    bool chunk_start;
+    bool chunk_start, chunk_follows;
     bool *restart;
     fg_counters *counters;      /* late events and samples, skipped repeats and work */
     uint64_t *work_left;        /* the block's work bound: units not yet spent

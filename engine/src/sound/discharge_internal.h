@@ -152,8 +152,9 @@ typedef struct fg_instance {
     uint32_t lo, hi;      /* events before lo are done; from hi on not yet begun */
     /* a model writing ahead: the ears of the events before `ahead`, and
      * ears before ahead_ear of that one, are written to the chunk's end;
-     * the last sample they touch, on the engine clock */
-    uint32_t ahead, ahead_ear;
+     * the events before `settled` to their own end, within the chunk; the
+     * last sample they touch, on the engine clock */
+    uint32_t ahead, ahead_ear, settled;
     double last_frame;
     bool main_only;       /* dart leader: the main channel only */
 } fg_instance;

@@ -140,7 +140,9 @@ static inline fg_wave_status fg_discharge_price_ended(const fg_block_context *ct
  * of the window and, in a later one, only those not yet written in the
  * chunk (those that joined the window, or that a skip left): a wave is
  * then placed, evaluated and added once a chunk, whatever its length. The
- * instance is done once every event is written and has ended. */
+ * events written to their end in one chunk are not visited in the next
+ * when it follows whole. The instance is done once every event is written
+ * and has ended. */
 static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instance *in,
                                                 const fg_discharge_block *vb,
                                                 fg_discharge_place_fn place,
@@ -152,9 +154,12 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
     while (in->hi < n &&
            fg_instance_event(v, in, in->hi)->start_s + in->offset_s - vb->margin_s <= vb->end_s)
         in->hi++;
-    const bool whole = !v->model->writes_ahead || ctx->chunk_start;
+    const bool writes_ahead = v->model->writes_ahead;
+    const bool whole = !writes_ahead || ctx->chunk_start;
     if (whole) {
-        in->ahead = in->lo;
+        if (ctx->chunk_follows && in->settled > in->lo)
+            in->lo = in->settled;
+        in->ahead = in->settled = in->lo;
         in->ahead_ear = 0;
         in->last_frame = -INFINITY;
     } else if (in->ahead == n && !fg_instance_sounds_ahead(in, ctx->start_frame)) {
@@ -170,7 +175,7 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         .fs_hz = ctx->cfg->sample_rate_hz,
         .c_m_s = ctx->cfg->speed_of_sound_m_s,
         .frames = ctx->frames,
-        .ahead = v->model->writes_ahead ? ctx->ahead : ctx->frames,
+        .ahead = writes_ahead ? ctx->ahead : ctx->frames,
     };
     /* the instance's emission on the engine clock, seconds */
     const double emission_s = (v->emit_frame / play.fs_hz) + in->offset_s;
@@ -187,7 +192,11 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         }
         bool done = true;
         long lost_here = 0;
-        for (unsigned ch = k == in->ahead ? in->ahead_ear : 0; ch < ears; ch++) {
+        const unsigned first_ear = k == in->ahead ? in->ahead_ear : 0;
+        /* written to its end in the chunk, every ear (the ears before
+         * first_ear were written in an earlier block, perhaps not whole) */
+        bool settled = first_ear == 0;
+        for (unsigned ch = first_ear; ch < ears; ch++) {
             const fg_event_ear *ear = &ev->ear[ch];
             fg_event_ear heard;
             if (vb->moving) {
@@ -210,12 +219,15 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
                 skipped = units + (ears - ch - 1) + (uint64_t)(in->hi - k - 1) * ears;
                 in->ahead = k;
                 in->ahead_ear = ch;
-                done = false;
+                done = settled = false;
                 break;
             }
             if (st != FG_WAVE_DONE)
                 done = false;
             const long a = at.first, b = at.last;
+            /* its last taps, at b .. b + 3, lie in the chunk */
+            settled = settled && (st == FG_WAVE_DONE || (writes_ahead && st == FG_WAVE_SOUNDING &&
+                                                         b + 3 < (long)play.ahead));
             in->last_frame = fmax(in->last_frame, ctx->start_frame + (double)b);
             long missed = k >= first_new && a < 0 ? (b < 0 ? b : -1) - a + 1 : 0;
             if (missed > lost_here)
@@ -227,6 +239,8 @@ static inline bool fg_discharge_render_instance(fg_discharge_voice *v, fg_instan
         }
         if (done && k == in->lo && whole)
             in->lo++;
+        if (settled && !skipped && k == in->settled)
+            in->settled++;
         if (skipped) {
             fg_count(&ctx->counters->skipped_work, skipped);
             break;
