@@ -33,9 +33,14 @@ bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
                                    const fg_hrir_set *hrirs, const fg_listener *listener,
                                    unsigned block)
 {
-    fg_engine_config cfg = {.sample_rate_hz = 48000, .max_block_frames = block,
-                            .segment_capacity = (uint32_t)(2 * count), .max_voices = 1,
-                            .layout = layout, .ambisonic_order = order, .hrirs = hrirs};
+    fg_engine_config cfg = {.sample_rate_hz = 48000,
+                            .max_block_frames = block,
+                            .segment_capacity = (uint32_t)(2 * count),
+                            .max_voices = 1,
+                            .layout = layout,
+                            .ambisonic_order = order,
+                            .hrirs = hrirs,
+                            .chunk_frames = BENCH_CHUNK_FRAMES};
     fg_engine *e;
     check(fg_engine_create(&cfg, &e), "create");
     check(fg_engine_set_listener(e, listener), "listener");

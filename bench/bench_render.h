@@ -1,11 +1,15 @@
 /* Timing one discharge through the engine's real path: post, then pull
- * blocks offline as fast as possible until the voice has finished. */
+ * blocks offline as fast as possible until the voice has finished, in
+ * chunks of BENCH_CHUNK_FRAMES as fulgur render renders. */
 #ifndef FULGUR_BENCH_RENDER_H
 #define FULGUR_BENCH_RENDER_H
 
 #include <stddef.h>
 
 #include "fulgur/fulgur.h"
+
+/* fulgur render's chunk (SCENE_RENDER_CHUNK_FRAMES, fg_engine_config.chunk_frames) */
+#define BENCH_CHUNK_FRAMES 1024
 
 typedef struct bench_run {
     double post_s;     /* fg_engine_post: preparation and the arrival sort */

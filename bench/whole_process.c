@@ -29,6 +29,7 @@
 
 #define RATE_HZ 44100
 #define BLOCK_FRAMES 512         /* fulgur render's own block (SCENE_RENDER_BLOCK_FRAMES) */
+#define CHUNK_FRAMES 1024        /* and chunk (SCENE_RENDER_CHUNK_FRAMES) */
 #define SPEED_OF_SOUND_M_S 343.0 /* the peer's */
 
 typedef struct bolt {
@@ -126,12 +127,16 @@ static void check(fg_result r, const char *what)
 }
 
 /* fulgur's synthesis of the bolt: post + render of its frames, as the
- * scene's render does them (block 512, stereo, 44.1 kHz), CPU seconds. */
+ * scene's render does them (block 512, chunk 1024, stereo, 44.1 kHz), CPU
+ * seconds. */
 static double fulgur_synthesis_s(const bolt *b)
 {
-    fg_engine_config cfg = {.sample_rate_hz = RATE_HZ, .channels = 2,
+    fg_engine_config cfg = {.sample_rate_hz = RATE_HZ,
+                            .channels = 2,
                             .max_block_frames = BLOCK_FRAMES,
-                            .segment_capacity = (uint32_t)b->count, .max_voices = 1};
+                            .chunk_frames = CHUNK_FRAMES,
+                            .segment_capacity = (uint32_t)b->count,
+                            .max_voices = 1};
     fg_engine *e;
     check(fg_engine_create(&cfg, &e), "create");
     fg_listener pose = {.position = {b->ear[0], b->ear[1], b->ear[2]}, .forward = {-1, 0, 0},

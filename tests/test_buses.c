@@ -34,7 +34,7 @@ static void test_tail_ends(void **state)
         const unsigned band = bands[t], bus = FG_BUS_BAND0 + band, fed = 1;
         fg_bus_set *s = calloc(1, sizeof *s);
         assert_non_null(s);
-        assert_int_equal(fg_bus_set_init(s, CHANNELS, BLOCK, FS, 343.0, 0.0, &air), FG_OK);
+        assert_int_equal(fg_bus_set_init(s, CHANNELS, BLOCK, 0, FS, 343.0, 0.0, &air), FG_OK);
         fg_bus_set_design_bands(s);
         /* the same filter alone, run without end over the whole signal */
         fg_iir alone[FG_ABSORPTION_BANDS];

@@ -591,13 +591,14 @@ static bool same_config(const fg_engine_config *a, const fg_engine_config *b)
     return a->sample_rate_hz == b->sample_rate_hz && a->max_block_frames == b->max_block_frames &&
            a->channels == b->channels && a->max_voices == b->max_voices &&
            a->segment_capacity == b->segment_capacity &&
-           a->speed_of_sound_m_s == b->speed_of_sound_m_s &&
-           a->ear_spacing_m == b->ear_spacing_m && a->max_lookahead_s == b->max_lookahead_s &&
+           a->speed_of_sound_m_s == b->speed_of_sound_m_s && a->ear_spacing_m == b->ear_spacing_m &&
+           a->max_lookahead_s == b->max_lookahead_s &&
            a->max_adopt_per_block == b->max_adopt_per_block &&
            a->air_temperature_k == b->air_temperature_k &&
-           a->air_humidity_pct == b->air_humidity_pct && a->air_pressure_kpa == b->air_pressure_kpa &&
-           a->work_per_frame == b->work_per_frame && a->layout == b->layout &&
-           a->ambisonic_order == b->ambisonic_order;
+           a->air_humidity_pct == b->air_humidity_pct &&
+           a->air_pressure_kpa == b->air_pressure_kpa && a->work_per_frame == b->work_per_frame &&
+           a->layout == b->layout && a->ambisonic_order == b->ambisonic_order &&
+           a->chunk_frames == b->chunk_frames;
 }
 
 static void test_create(void **state)
@@ -626,7 +627,7 @@ static void test_create(void **state)
     /* NULL config: every default as the header documents it */
     fg_engine *e;
     assert_int_equal(fg_engine_create(NULL, &e), FG_OK);
-    fg_engine_config used, dflt;
+    fg_engine_config used, dflt, got_chunk;
     fg_engine_get_config(e, &used);
     assert_int_equal(fg_engine_config_resolve(NULL, &dflt), FG_OK);
     fg_engine_destroy(e);
@@ -644,8 +645,13 @@ static void test_create(void **state)
               dflt.ear_spacing_m == documented.ear_spacing_m &&
               dflt.max_lookahead_s == documented.max_lookahead_s &&
               dflt.max_adopt_per_block == documented.max_adopt_per_block &&
-              dflt.work_per_frame == 64,
+              dflt.work_per_frame == 64 && dflt.chunk_frames == 0,
           "a default differs from engine.h");
+    /* a chunk up to the longest block; longer is refused, as a block is */
+    fg_engine_config chunked = {.chunk_frames = 65536}, too_long = {.chunk_frames = 65537};
+    assert_int_equal(fg_engine_config_resolve(&chunked, &got_chunk), FG_OK);
+    assert_int_equal(got_chunk.chunk_frames, 65536);
+    assert_int_equal(fg_engine_config_resolve(&too_long, &got_chunk), FG_ERR_ARGUMENT);
     CHECK(dflt.segment_capacity == documented.segment_capacity,
           "default segment_capacity %u, engine.h documents %u", dflt.segment_capacity,
           documented.segment_capacity);

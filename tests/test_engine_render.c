@@ -109,14 +109,18 @@ static void ears_of(const fg_listener *p, double ears[2][3])
 /* the still head */
 static const fg_listener head = {.position = {0, 0, 1.7}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
 
-/* Renders the scene in blocks of block frames against the reference;
- * returns the work units spent (fg_engine_report.work_units). */
-static uint64_t run(uint32_t block)
+/* Renders the scene in blocks of block frames, in chunks of chunk
+ * (fg_engine_config.chunk_frames), against the reference; returns the
+ * work units spent (fg_engine_report.work_units). */
+static uint64_t run(uint32_t block, uint32_t chunk)
 {
     scene s;
     make_scene(&s);
     fg_engine *e;
-    fg_engine_config cfg = {.sample_rate_hz = FS, .max_block_frames = 4096, .speed_of_sound_m_s = C};
+    fg_engine_config cfg = {.sample_rate_hz = FS,
+                            .max_block_frames = 4096,
+                            .speed_of_sound_m_s = C,
+                            .chunk_frames = chunk};
     assert_int_equal(fg_engine_create(&cfg, &e), FG_OK);
     assert_int_equal(fg_engine_set_listener(e, &head), FG_OK);
     fg_discharge d = {.nodes = s.nodes, .node_count = NODES, .sound = s.sound,
@@ -153,23 +157,27 @@ static uint64_t run(uint32_t block)
     return st.work_units;
 }
 
-/* Any block gives the reference; and each ear's wave is visited once a
- * chunk (core/bus_internal.h), not once a block: the blocks of one frame
- * cost no more units than the 4096-frame blocks, in which every wave lies
- * in one block or two. Visited every block, the 30-360-sample waves would
- * cost tens of units each at one frame. */
+/* Any block gives the reference, in chunks or without; and in chunks of
+ * 4096 frames each ear's wave is visited once a chunk
+ * (core/bus_internal.h), not once a block: the blocks of one frame cost
+ * no more units than the 4096-frame blocks, in which every wave lies in
+ * one block or two. Without chunks, visited every block, the 30-360-sample
+ * waves cost tens of units each at one frame. */
 static void still_listener_any_block(void **state)
 {
     (void)state;
     static const uint32_t blocks[] = {4096, 1, 7, 64, 333};
     uint64_t whole = 0;
     for (size_t i = 0; i < sizeof blocks / sizeof blocks[0]; i++) {
-        uint64_t units = run(blocks[i]);
-        print_message("blocks of %u: %llu units\n", blocks[i], (unsigned long long)units);
+        uint64_t units = run(blocks[i], 4096), unchunked = run(blocks[i], 0);
+        print_message("blocks of %u: %llu units in chunks, %llu without\n", blocks[i],
+                      (unsigned long long)units, (unsigned long long)unchunked);
         if (i == 0)
             whole = units;
         else
             assert_true(units <= whole);
+        if (blocks[i] == 1)
+            assert_true(unchunked > 10 * whole);
     }
 }
 

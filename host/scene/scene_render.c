@@ -46,6 +46,7 @@ static fg_result create_engine(render_job *job, char *err, size_t err_size)
     fg_engine_config cfg;
     scene_engine_config(s, &cfg);
     cfg.max_block_frames = job->block_frames;
+    cfg.chunk_frames = SCENE_RENDER_CHUNK_FRAMES;
     cfg.max_voices = (uint32_t)(s->discharge_count + s->aero_count + s->fire_count);
     cfg.segment_capacity = events > UINT32_MAX ? UINT32_MAX : (uint32_t)events;
     /* an offline render has no deadline: the bound only keeps each block

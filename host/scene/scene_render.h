@@ -33,6 +33,14 @@
  * but for rounding (docs/scene-format.md). */
 #define SCENE_RENDER_BLOCK_FRAMES 512
 
+/* Its chunk (fg_engine_config.chunk_frames): a still listener's WM-waves
+ * are visited once in 1024 frames, not once a block, so that a long wave
+ * costs about what a short one does (bench/results/whole_process.md,
+ * "Chunks"). 1024: stereo's accumulator planes, with 512-frame blocks'
+ * floats, still fit the 2 MiB huge page the 512-frame planes took; 2048
+ * would map 2 MiB more. */
+#define SCENE_RENDER_CHUNK_FRAMES 1024
+
 /* Where the blocks go. */
 typedef struct scene_render_sink {
     /* Takes frames of each of the scene's channels, planes[ch][0..frames),

@@ -94,6 +94,7 @@ typedef struct fg_engine_config {
     double max_lookahead_s; uint32_t max_adopt_per_block; double air_temperature_k;
     double air_humidity_pct; double air_pressure_kpa; uint32_t work_per_frame;
     fg_layout layout; uint32_t ambisonic_order; const fg_hrir_set *hrirs;
+    uint32_t chunk_frames;
 } fg_engine_config;
 typedef enum fg_voice_model { FG_MODEL_WM = 0, FG_MODEL_ABE = 1 } fg_voice_model;
 #define FG_MAX_STROKES 32

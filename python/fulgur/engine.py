@@ -82,7 +82,8 @@ class Engine:
     max_voices, segment_capacity, speed_of_sound_m_s, ear_spacing_m,
     max_lookahead_s, max_adopt_per_block, air_temperature_k,
     air_humidity_pct, air_pressure_kpa, layout ("stereo" or "ambisonics"),
-    ambisonic_order); those not given take the engine's defaults."""
+    ambisonic_order, chunk_frames); those not given take the engine's
+    defaults."""
 
     def __init__(self, config=None, **settings):
         values = dict(config or {}) if config is None or hasattr(config, "items") else None

@@ -49,7 +49,8 @@ def test_post_render_collect_round_trip():
 
 def test_engine_reproduces_the_scene_render():
     """Posting a scene's discharge through the Engine as fulgur render does
-    (same config, emit time, pose, 256-frame blocks) gives its samples."""
+    (same config, emit time, pose, 256-frame blocks in 1024-frame chunks)
+    gives its samples."""
     nodes, _ = fulgur.lightning(seed=2, height_m=1500)
     nodes["y"] += 2000.0
     rows = [[float(n["x"]), float(n["y"]), float(n["z"]), int(n["parent"]), int(n["flags"])]
@@ -60,7 +61,7 @@ def test_engine_reproduces_the_scene_render():
                              "tree": {"nodes": rows}}]}
     expected = fulgur.render(scene).samples
     with fulgur.Engine(sample_rate_hz=RATE, channels=2, max_block_frames=256, max_voices=1,
-                       segment_capacity=len(nodes) - 1) as e:
+                       segment_capacity=len(nodes) - 1, chunk_frames=1024) as e:
         e.set_listener([0, 0, 1.7], [0, 1, 0], [0, 0, 1])
         e.post(nodes, "lightning", emit_time_s=0.3, strokes=2, seed=5)
         blocks = []

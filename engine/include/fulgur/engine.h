@@ -124,6 +124,15 @@ typedef struct fg_engine_config {
                                    * binaural: 0 */
     const fg_hrir_set *hrirs;     /* binaural only (required); borrowed by fg_engine_create,
                                    * NULL in the configuration in use */
+    uint32_t chunk_frames;        /* 0 (none); <= 65536. For a render that is not paced by a
+                                   * device (a file, a batch): a still listener's WM-waves
+                                   * are written this many frames ahead, to the end of a
+                                   * chunk of blocks, and visited once a chunk, not once a
+                                   * block, so that a long wave costs about what a short one
+                                   * does; the chunk's first block costs more (every wave
+                                   * sounding, to the chunk's end), the others less. Longer
+                                   * than max_block_frames to have an effect; cut to what the
+                                   * buses' 16 MB of planes hold. fulgur render takes 1024. */
 } fg_engine_config;
 
 /* The voice model a discharge is rendered with. */

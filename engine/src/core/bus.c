@@ -25,8 +25,9 @@ static bool is_band(unsigned b)
     return k >= FG_BUS_BAND0 && k < FG_BUS_FIR;
 }
 
-fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
-                          double c_m_s, double head_radius_m, const fg_air *air)
+fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
+                          uint32_t chunk_frames, double fs_hz, double c_m_s, double head_radius_m,
+                          const fg_air *air)
 {
     /* the set up to the channels it has: the audio thread writes it */
     fg_prefault_zeroed(s, offsetof(fg_bus_set, chan) + channels * sizeof s->chan[0]);
@@ -40,12 +41,12 @@ fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
     while (frames < max_frames && 2 * (size_t)frames <= fit)
         frames *= 2;
     max_frames = frames < max_frames ? frames : max_frames;
-    /* the chunk: as long as the block, or doubled while the accumulators'
-     * planes and the block's floats fit */
-    uint32_t chunk = max_frames;
-    while (2 * (size_t)chunk <= FG_BUS_CHUNK_FRAMES &&
-           planes * (2 * chunk * sizeof *s->d3 + max_frames * sizeof *s->pre) <= FG_BUS_PLANE_BYTES)
-        chunk *= 2;
+    /* the chunk: as long as the block, or the longer one asked, cut to
+     * what fits beside the block's floats */
+    const size_t chunk_fit =
+        (FG_BUS_PLANE_BYTES / planes - max_frames * sizeof *s->pre) / sizeof *s->d3;
+    uint32_t chunk = chunk_frames < chunk_fit ? chunk_frames : (uint32_t)chunk_fit;
+    chunk = chunk > max_frames ? chunk : max_frames;
     /* the planes and the FIRs in one allocation (fg_big_alloc.h): stereo's
      * 0.6 MB at 256 frames took 190 page faults as three */
     const size_t samples = planes * max_frames, chunk_samples = planes * chunk;

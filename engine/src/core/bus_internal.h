@@ -53,18 +53,11 @@ enum {
  * renders a longer call as blocks of that length (core/render.c). */
 #define FG_BUS_PLANE_BYTES (16u << 20)
 
-/* The longest chunk: the accumulators' planes are as long where
- * FG_BUS_PLANE_BYTES holds them, else as long as the block. A still
- * listener's block adds to the chunk's accumulators each wave that joins
- * it, to the chunk's end, and no wave already written: a wave is visited
- * once a chunk, not once a block. 1 024 frames (21 ms at 48 kHz): stereo's
- * 188 planes of them, with 512-frame blocks' floats and the FIRs, take
- * 2.07 MB, the one huge page the 512-frame planes took
- * (fg_big_alloc.h), so no process grows; 2 048 would cost 2 MiB more
- * (bench/results/whole_process.md, "Chunks"). */
-#define FG_BUS_CHUNK_FRAMES 1024
-
-/* How a block's accumulators begin (fg_bus_set_begin). */
+/* The accumulators' planes are a chunk of blocks long
+ * (fg_engine_config.chunk_frames): a still listener's block adds to the
+ * chunk's accumulators each wave that joins it, to the chunk's end, and no
+ * wave already written: a wave is visited once a chunk, not once a block.
+ * How a block's accumulators begin (fg_bus_set_begin): */
 typedef enum fg_chunk_start {
     FG_CHUNK_CARRY, /* in the chunk under way, or a new one where the block does not fit it */
     FG_CHUNK_NEW,   /* in a new chunk: what was written ahead is dropped */
@@ -90,8 +83,8 @@ typedef struct fg_bus_set {
     unsigned channels;
     uint32_t max_frames; /* the longest block: the max_frames asked, or fewer to fit
                           * FG_BUS_PLANE_BYTES */
-    uint32_t chunk_frames; /* the longest chunk: max_frames, or up to
-                            * FG_BUS_CHUNK_FRAMES where they fit */
+    uint32_t chunk_frames; /* the longest chunk: max_frames, or the chunk_frames asked
+                            * where it is longer and the planes fit */
     /* audio thread: the block under way, and the chunk it lies in: its
      * length and the frames of it before the block; whether it follows
      * the chunk before whole (that one's every frame was ended, none of
@@ -129,13 +122,14 @@ typedef struct fg_bus_set {
 } fg_bus_set;
 
 /* Allocates the buses for blocks of max_frames frames or of fewer, to fit
- * FG_BUS_PLANE_BYTES (s->max_frames says), and chunks of chunk_frames,
- * with the twins and their filter
+ * FG_BUS_PLANE_BYTES (s->max_frames says), and for chunks of chunk_frames
+ * or of fewer, to fit it (s->chunk_frames), with the twins and their filter
  * for a head of radius head_radius_m (0: none, no twins). s is zeroed
  * memory (the engine's allocation); the part the channels use is mapped,
  * the channels beyond them are never written. [main-thread] */
-fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames, double fs_hz,
-                          double c_m_s, double head_radius_m, const fg_air *air);
+fg_result fg_bus_set_init(fg_bus_set *s, unsigned channels, uint32_t max_frames,
+                          uint32_t chunk_frames, double fs_hz, double c_m_s, double head_radius_m,
+                          const fg_air *air);
 void fg_bus_set_deinit(fg_bus_set *s);
 
 /* Designs the ISO 9613-1 band filters the first time a voice needs them

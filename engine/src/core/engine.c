@@ -74,14 +74,16 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
     default:
         return FG_ERR_ARGUMENT;
     }
-    if (in->max_block_frames > MAX_BLOCK_LIMIT ||
-        in->max_voices > MAX_VOICES_LIMIT || in->segment_capacity > SEGMENT_LIMIT ||
+    if (in->max_block_frames > MAX_BLOCK_LIMIT || in->max_voices > MAX_VOICES_LIMIT ||
+        in->segment_capacity > SEGMENT_LIMIT ||
         (in->speed_of_sound_m_s != 0 && (in->speed_of_sound_m_s < FG_SPEED_OF_SOUND_MIN_M_S ||
                                          in->speed_of_sound_m_s > FG_SPEED_OF_SOUND_MAX_M_S)) ||
-        in->ear_spacing_m < 0 || in->ear_spacing_m > SETTING_LIMIT || in->work_per_frame > WORK_LIMIT ||
-        in->max_lookahead_s < 0 || in->max_lookahead_s > SETTING_LIMIT ||
-        in->max_adopt_per_block > MAX_VOICES_LIMIT ||
-        (in->air_temperature_k != 0 && (in->air_temperature_k < 200 || in->air_temperature_k > 350)) ||
+        in->ear_spacing_m < 0 || in->ear_spacing_m > SETTING_LIMIT ||
+        in->work_per_frame > WORK_LIMIT || in->max_lookahead_s < 0 ||
+        in->max_lookahead_s > SETTING_LIMIT || in->max_adopt_per_block > MAX_VOICES_LIMIT ||
+        in->chunk_frames > MAX_BLOCK_LIMIT ||
+        (in->air_temperature_k != 0 &&
+         (in->air_temperature_k < 200 || in->air_temperature_k > 350)) ||
         in->air_humidity_pct < 0 || in->air_humidity_pct > 100 ||
         (in->air_pressure_kpa != 0 && (in->air_pressure_kpa < 10 || in->air_pressure_kpa > 200)))
         return FG_ERR_ARGUMENT;
@@ -107,6 +109,7 @@ fg_result fg_engine_config_resolve(const fg_engine_config *in, fg_engine_config 
         .air_humidity_pct = FG_DEF(in->air_humidity_pct, defaults.air_humidity_pct),
         .air_pressure_kpa = FG_DEF(in->air_pressure_kpa, defaults.air_pressure_kpa),
         .work_per_frame = FG_DEF(in->work_per_frame, defaults.work_per_frame),
+        .chunk_frames = in->chunk_frames,
         .layout = in->layout,
         .ambisonic_order = order,
         .hrirs = in->hrirs,
@@ -233,9 +236,8 @@ fg_result fg_engine_create_with(const fg_engine_config *config,
     fg_air air = {cfg.air_temperature_k - 273.15, cfg.air_humidity_pct, cfg.air_pressure_kpa};
     if (r == FG_OK)
         r = ok ? fg_bus_set_init(&e->buses, fg_layout_bus_channels(&cfg), cfg.max_block_frames,
-                                 cfg.sample_rate_hz, cfg.speed_of_sound_m_s,
-                                 fg_layout_ears(&cfg) == 2 ? 0.5 * cfg.ear_spacing_m : 0.0,
-                                 &air)
+                                 cfg.chunk_frames, cfg.sample_rate_hz, cfg.speed_of_sound_m_s,
+                                 fg_layout_ears(&cfg) == 2 ? 0.5 * cfg.ear_spacing_m : 0.0, &air)
                : FG_ERR_NO_MEMORY;
     if (r == FG_OK && cfg.layout == FG_LAYOUT_BINAURAL) {
         unsigned planes = fg_layout_bus_channels(&cfg);

@@ -32,11 +32,12 @@ static void render_block(fg_engine *e, float *const *out, uint32_t nframes)
     fg_trajectory_head(&e->trajectory, start_s, &head);
     fg_ears ears;
     fg_head_ears(&head, fg_layout_ears(&e->cfg), e->cfg.ear_spacing_m, &ears);
-    /* a new chunk when the listener moves (its waves are heard where they
-     * arrive, a block at a time), when the pose has changed since the
-     * chunk's waves were written, or when a source asked */
+    /* a chunk of the block without chunks, or when the listener moves (its
+     * waves are heard where they arrive, a block at a time); a new chunk
+     * when the pose has changed since the chunk's waves were written, or
+     * when a source asked */
     const uint64_t serial = fg_trajectory_serial(&e->trajectory);
-    fg_chunk_start chunk = !e->trajectory.still                            ? FG_CHUNK_BLOCK
+    fg_chunk_start chunk = !e->cfg.chunk_frames || !e->trajectory.still    ? FG_CHUNK_BLOCK
                            : serial != e->chunk_serial || e->restart_chunk ? FG_CHUNK_NEW
                                                                            : FG_CHUNK_CARRY;
     fg_bus_set_begin(&e->buses, nframes, chunk);
