@@ -12,26 +12,11 @@ static void check(fg_result r, const char *what)
     }
 }
 
-bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_config *params,
-                            const fg_listener *listener, unsigned block)
-{
-    return bench_render_tree_with(nodes, count, params, &(fg_propagation_config){0}, FG_MODEL_WM,
-                                  listener, block);
-}
-
-bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_sound_config *params,
-                                 const fg_propagation_config *prop, fg_voice_model model,
-                                 const fg_listener *listener, unsigned block)
-{
-    return bench_render_tree_layout(nodes, count, params, prop, model, FG_LAYOUT_STEREO, 0, NULL,
-                                    listener, block);
-}
-
-bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
-                                   const fg_sound_config *params, const fg_propagation_config *prop,
-                                   fg_voice_model model, fg_layout layout, uint32_t order,
-                                   const fg_hrir_set *hrirs, const fg_listener *listener,
-                                   unsigned block)
+/* The render in chunks of chunk frames (fg_engine_config.chunk_frames). */
+static bench_run render_tree(const fg_node *nodes, size_t count, const fg_sound_config *params,
+                             const fg_propagation_config *prop, fg_voice_model model,
+                             fg_layout layout, uint32_t order, const fg_hrir_set *hrirs,
+                             const fg_listener *listener, unsigned block, uint32_t chunk)
 {
     fg_engine_config cfg = {.sample_rate_hz = 48000,
                             .max_block_frames = block,
@@ -40,7 +25,7 @@ bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
                             .layout = layout,
                             .ambisonic_order = order,
                             .hrirs = hrirs,
-                            .chunk_frames = BENCH_CHUNK_FRAMES};
+                            .chunk_frames = chunk};
     fg_engine *e;
     check(fg_engine_create(&cfg, &e), "create");
     check(fg_engine_set_listener(e, listener), "listener");
@@ -71,4 +56,28 @@ bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
         free(planes[ch]);
     fg_engine_destroy(e);
     return run;
+}
+
+bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_config *params,
+                            const fg_listener *listener, unsigned block)
+{
+    return render_tree(nodes, count, params, &(fg_propagation_config){0}, FG_MODEL_WM,
+                       FG_LAYOUT_STEREO, 0, NULL, listener, block, BENCH_CHUNK_FRAMES);
+}
+
+bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_sound_config *params,
+                                 const fg_propagation_config *prop, fg_voice_model model,
+                                 const fg_listener *listener, unsigned block)
+{
+    return render_tree(nodes, count, params, prop, model, FG_LAYOUT_STEREO, 0, NULL, listener,
+                       block, 0);
+}
+
+bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
+                                   const fg_sound_config *params, const fg_propagation_config *prop,
+                                   fg_voice_model model, fg_layout layout, uint32_t order,
+                                   const fg_hrir_set *hrirs, const fg_listener *listener,
+                                   unsigned block)
+{
+    return render_tree(nodes, count, params, prop, model, layout, order, hrirs, listener, block, 0);
 }

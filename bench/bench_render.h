@@ -1,6 +1,5 @@
 /* Timing one discharge through the engine's real path: post, then pull
- * blocks offline as fast as possible until the voice has finished, in
- * chunks of BENCH_CHUNK_FRAMES as fulgur render renders. */
+ * blocks offline as fast as possible until the voice has finished. */
 #ifndef FULGUR_BENCH_RENDER_H
 #define FULGUR_BENCH_RENDER_H
 
@@ -20,17 +19,19 @@ typedef struct bench_run {
 } bench_run;
 
 /* Renders nodes[0..count) as one discharge with params heard from
- * listener, in blocks of block frames at 48 kHz. Exits on an engine error. */
+ * listener, in blocks of block frames at 48 kHz, in chunks of
+ * BENCH_CHUNK_FRAMES as fulgur render renders. Exits on an engine error. */
 bench_run bench_render_tree(const fg_node *nodes, size_t count, const fg_sound_config *params,
                             const fg_listener *listener, unsigned block);
 
-/* The same with propagation effects and a voice model. */
+/* The same, a chunk a block (as a host paced by a device renders), with
+ * propagation effects and a voice model. */
 bench_run bench_render_tree_with(const fg_node *nodes, size_t count, const fg_sound_config *params,
                                  const fg_propagation_config *prop, fg_voice_model model,
                                  const fg_listener *listener, unsigned block);
 
-/* The same in an output layout (fg_engine_config.layout, ambisonic_order,
- * hrirs: NULL but for binaural). */
+/* The same, a chunk a block, in an output layout (fg_engine_config.layout,
+ * ambisonic_order, hrirs: NULL but for binaural). */
 bench_run bench_render_tree_layout(const fg_node *nodes, size_t count,
                                    const fg_sound_config *params, const fg_propagation_config *prop,
                                    fg_voice_model model, fg_layout layout, uint32_t order,
