@@ -318,6 +318,10 @@ FG_API size_t fg_engine_collect(fg_engine *engine);
  * is (d + 1.3 ear_spacing)/c (the way around the head to the far ear
  * included), capped at max_lookahead_s; events brought forward
  * by more than that are counted as late.
+ * Chunks (chunk_frames): a still listener's wave is added to the chunk's
+ * end in the block it joins and not visited again in the chunk; the
+ * chunk's first block adds every sounding wave. The samples are those of
+ * blocks as long as the chunk, to rounding (under 1e-7 of the peak).
  * Bounded: the block's work stops at the bound above (FG_WORK_PER_FRAME_DEFAULT),
  * at most 64 emissions (strokes, repeats) of a voice sound at once, and a voice
  * whose sound turns non-finite (a pose far out of its model's range) is
