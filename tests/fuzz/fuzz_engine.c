@@ -262,6 +262,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
      * without the default's 131072 events, whose allocation and clearing
      * took most of each input's time */
     r.cfg.segment_capacity = sizes / 2 % 4 ? 2 * MAX_NODES : MAX_NODES / 2;
+    /* in chunks of 1024 frames, as fulgur render renders, or a chunk a block */
+    r.cfg.chunk_frames = sizes / 8 % 2 ? 1024 : 0;
     if (fg_engine_create(&r.cfg, &r.engine) != FG_OK)
         abort();
     fg_engine_get_config(r.engine, &r.cfg);
