@@ -242,18 +242,19 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
         unsigned ch[FG_BUS_MAX_CHANNELS], count = 0;
         float *x[FG_BUS_MAX_CHANNELS];
         bool input[FG_BUS_MAX_CHANNELS], tail[FG_BUS_MAX_CHANNELS];
-        fg_channel_mask touched = 0;
+        /* the accumulators whose waves still add to this block */
+        fg_channel_mask fed = 0;
         for (fg_channel_mask m = s->opened[b]; m; m &= m - 1) {
             unsigned c = (unsigned)__builtin_ctzll(m);
-            touched |= (fg_channel_mask)fg_accum_sounds(&s->chan[c].accum[b]) << c;
+            fed |= (fg_channel_mask)fg_accum_sounds(&s->chan[c].accum[b]) << c;
         }
-        fg_channel_mask live = touched | s->pre_used[b] | s->ringing[b];
+        fg_channel_mask live = fed | s->pre_used[b] | s->ringing[b];
         fg_accum *acc[FG_BUS_MAX_CHANNELS];
         if (b == FG_BUS_DRY) {
             /* the first bus into out, which render zeroed, where nothing
              * was written into its planes */
             unsigned dry = 0;
-            for (fg_channel_mask m = touched & ~s->pre_used[b]; m; m &= m - 1) {
+            for (fg_channel_mask m = fed & ~s->pre_used[b]; m; m &= m - 1) {
                 unsigned c = (unsigned)__builtin_ctzll(m);
                 ch[dry] = c;
                 acc[dry] = &s->chan[c].accum[b];
@@ -275,7 +276,7 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
             ch[planes] = c;
             acc[planes] = &s->chan[c].accum[b];
             x[planes] = pre_plane(s, b, c);
-            input[planes++] = (touched | s->pre_used[b]) >> c & 1;
+            input[planes++] = (fed | s->pre_used[b]) >> c & 1;
             s->pre_used[b] |= (fg_channel_mask)1 << c; /* zero it again next block */
         }
         fg_accum_end_all(acc, x, planes, n, s->accum_avx2);
@@ -313,7 +314,7 @@ uint64_t fg_bus_set_end(fg_bus_set *s, float *const *out, uint32_t n)
         /* one whose waves have ended, or that was handed out for none,
          * holds nothing: the chunk's next block starts it afresh */
         fg_channel_mask sounding = 0;
-        for (fg_channel_mask m = touched; m; m &= m - 1) {
+        for (fg_channel_mask m = fed; m; m &= m - 1) {
             unsigned c = (unsigned)__builtin_ctzll(m);
             sounding |= (fg_channel_mask)fg_accum_sounds(&s->chan[c].accum[b]) << c;
         }
